@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Installs every Debian package resharp needs to build, test, benchmark and fuzz.
+# Safe to run again: apt-get skips what is already installed.
+set -euo pipefail
+
+packages=(
+    build-essential cmake ninja-build
+    libeigen3-dev libtbb-dev libcli11-dev nlohmann-json3-dev
+    libcgal-dev libgmp-dev libmpfr-dev
+    libgtest-dev libgmock-dev libbenchmark-dev
+    clang libclang-rt-dev
+    python3
+)
+
+sudo_cmd=()
+if [[ $(id -u) -ne 0 ]]; then sudo_cmd=(sudo); fi
+
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${packages[@]}" >/dev/null
+echo "install-deps: all packages present"

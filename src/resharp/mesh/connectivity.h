@@ -1,0 +1,51 @@
+#pragma once
+/// Adjacency of an indexed triangle mesh: half-edge twins and vertex-to-face rings.
+///
+/// Half-edge h = 3f + k runs from triangles[f][k] to triangles[f][(k + 1) % 3]; its face is
+/// h / 3. Rings are stored in CSR form (count, prefix sum, scatter) so building them allocates
+/// three arrays and nothing per element.
+
+#include <span>
+#include <vector>
+
+#include "resharp/core/types.h"
+#include "resharp/mesh/mesh.h"
+
+namespace resharp {
+
+inline Index face_of(Index halfedge) { return halfedge / 3; }
+inline Index next_halfedge(Index h) { return h % 3 == 2 ? h - 2 : h + 1; }
+inline Index prev_halfedge(Index h) { return h % 3 == 0 ? h + 2 : h - 1; }
+inline Index tail_vertex(const Mesh& mesh, Index h) { return mesh.triangles[h / 3][h % 3]; }
+inline Index head_vertex(const Mesh& mesh, Index h) {
+    return mesh.triangles[h / 3][(h % 3 + 1) % 3];
+}
+
+/// What kind of edge a half-edge lies on.
+enum class EdgeKind : unsigned char {
+    Manifold,       ///< exactly one twin, running the other way
+    Boundary,       ///< no other face has this edge
+    NonManifold,    ///< three or more faces share the edge
+    Inconsistent,   ///< two faces share it running the same way (orientation flips here)
+};
+
+struct Connectivity {
+    /// Per half-edge (#3F): the twin half-edge, or kNoIndex unless edge_kind is Manifold.
+    std::vector<Index> twin;
+    /// Per half-edge (#3F).
+    std::vector<EdgeKind> edge_kind;
+    /// CSR offsets (#V + 1) into ring_faces.
+    std::vector<Index> ring_offsets;
+    /// Faces around each vertex (#3F in total), in increasing face order.
+    std::vector<Index> ring_faces;
+
+    std::span<const Index> faces_around(Index v) const {
+        return {ring_faces.data() + ring_offsets[v], ring_faces.data() + ring_offsets[v + 1]};
+    }
+};
+
+/// Builds twins and rings. Takes any mesh with valid indices; defects are classified in
+/// edge_kind, never thrown.
+Connectivity build_connectivity(const Mesh& mesh);
+
+}  // namespace resharp

@@ -1,0 +1,32 @@
+#pragma once
+/// Per-face and per-vertex geometric quantities every stage needs.
+
+#include <vector>
+
+#include "resharp/core/types.h"
+#include "resharp/mesh/connectivity.h"
+#include "resharp/mesh/mesh.h"
+
+namespace resharp {
+
+/// Unit normal of triangle (a, b, c) by the right-hand rule; zero for a degenerate triangle.
+Vec3 triangle_normal(const Vec3& a, const Vec3& b, const Vec3& c);
+
+/// Interior angle (radians) at corner k of face f.
+double corner_angle(const Mesh& mesh, Index f, int k);
+
+/// Per face (#F): unit normals, zero for degenerate faces.
+std::vector<Vec3> face_normals(const Mesh& mesh);
+
+/// Per vertex (#V): angle-weighted mean of the incident face normals (paper eq. 5.1 over the
+/// whole one-ring), normalised; zero where every incident face is degenerate.
+std::vector<Vec3> vertex_normals(const Mesh& mesh, const Connectivity& connectivity,
+                                 const std::vector<Vec3>& face_normals);
+
+/// Angle in degrees between two unit vectors, robust near 0 and 180.
+double angle_deg(const Vec3& a, const Vec3& b);
+
+/// Position of v within face f (0, 1 or 2). f must contain v.
+int corner_of(const Triangle& t, Index v);
+
+}  // namespace resharp

@@ -1,0 +1,55 @@
+#include "resharp/mesh/connectivity.h"
+
+#include <gtest/gtest.h>
+
+#include "support/simple_meshes.h"
+
+namespace resharp {
+namespace {
+
+TEST(Connectivity, EveryHalfEdgeOfAClosedBoxHasAnOppositeTwin) {
+    const Mesh mesh = test::box_mesh();
+    const Connectivity c = build_connectivity(mesh);
+    ASSERT_EQ(c.twin.size(), 36u);
+    for (Index h = 0; h < 36; ++h) {
+        ASSERT_EQ(c.edge_kind[h], EdgeKind::Manifold);
+        const Index t = c.twin[h];
+        ASSERT_NE(t, kNoIndex);
+        EXPECT_EQ(c.twin[t], h);
+        EXPECT_EQ(tail_vertex(mesh, t), head_vertex(mesh, h));
+        EXPECT_EQ(head_vertex(mesh, t), tail_vertex(mesh, h));
+        EXPECT_NE(face_of(t), face_of(h));
+    }
+}
+
+TEST(Connectivity, RingsListEachIncidentFaceOnceInOrder) {
+    const Mesh mesh = test::box_mesh();
+    const Connectivity c = build_connectivity(mesh);
+    std::size_t total = 0;
+    for (Index v = 0; v < 8; ++v) {
+        const auto ring = c.faces_around(v);
+        total += ring.size();
+        EXPECT_TRUE(std::is_sorted(ring.begin(), ring.end()));
+        for (Index f : ring) {
+            const Triangle& t = mesh.triangles[f];
+            EXPECT_TRUE(t[0] == v || t[1] == v || t[2] == v);
+        }
+    }
+    EXPECT_EQ(total, 36u);
+}
+
+TEST(Connectivity, ClassifiesBoundaryNonManifoldAndInconsistentEdges) {
+    Mesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, -1, 0}, {1, 1, 1}};
+    // Three faces on edge 0-1 (non-manifold); faces 3 and 4 share 2->5 in the same direction.
+    mesh.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}, {2, 5, 1}, {2, 5, 3}};
+    const Connectivity c = build_connectivity(mesh);
+    EXPECT_EQ(c.edge_kind[0], EdgeKind::NonManifold);   // 0->1 in face 0
+    EXPECT_EQ(c.edge_kind[9], EdgeKind::Inconsistent);  // 2->5 in face 3
+    EXPECT_EQ(c.edge_kind[12], EdgeKind::Inconsistent); // 2->5 in face 4
+    EXPECT_EQ(c.edge_kind[7], EdgeKind::Boundary);      // 0->3 in face 1
+    EXPECT_EQ(c.twin[0], kNoIndex);
+}
+
+}  // namespace
+}  // namespace resharp

@@ -1,0 +1,85 @@
+#include "resharp/mesh/mesh.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "resharp/core/errors.h"
+#include "resharp/mesh/geometry.h"
+#include "support/simple_meshes.h"
+
+namespace resharp {
+namespace {
+
+TEST(Weld, MergesExactlyEqualPointsOfAnStlSoup) {
+    const TriangleSoup soup = test::box_soup();
+    ASSERT_EQ(soup.points.size(), 36u);
+    const Mesh mesh = weld(soup);
+    EXPECT_EQ(mesh.vertex_count(), 8u);
+    EXPECT_EQ(mesh.face_count(), 12u);
+    for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_EQ(mesh.positions[mesh.triangles[f][k]], soup.points[soup.triangles[f][k]]);
+        }
+    }
+}
+
+TEST(Weld, KeepsPointsThatDifferInTheLastBit) {
+    TriangleSoup soup;
+    const double x = 1.0;
+    soup.points = {{0, 0, 0}, {x, 0, 0}, {0, 1, 0},
+                   {std::nextafter(x, 2.0), 0, 0}, {0, 0, 0}, {0, 1, 0}};
+    soup.triangles = {{0, 1, 2}, {3, 4, 5}};
+    EXPECT_EQ(weld(soup).vertex_count(), 4u);
+}
+
+TEST(Weld, FoldsNegativeZeroIntoZero) {
+    TriangleSoup soup;
+    soup.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-0.0, -0.0, 0}};
+    soup.triangles = {{0, 1, 2}, {3, 2, 1}};
+    EXPECT_EQ(weld(soup).vertex_count(), 3u);
+}
+
+TEST(Weld, DropsUnusedPoints) {
+    TriangleSoup soup;
+    soup.points = {{5, 5, 5}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    soup.triangles = {{1, 2, 3}};
+    const Mesh mesh = weld(soup);
+    EXPECT_EQ(mesh.vertex_count(), 3u);
+    EXPECT_EQ(mesh.triangles[0], (Triangle{0, 1, 2}));
+}
+
+TEST(Weld, RejectsOutOfRangeIndexAndNonFiniteCoordinates) {
+    TriangleSoup soup;
+    soup.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    soup.triangles = {{0, 1, 3}};
+    EXPECT_THROW(weld(soup), InvalidInput);
+    soup.triangles = {{0, 1, 2}};
+    soup.points[1].y() = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(weld(soup), InvalidInput);
+    soup.points[1].y() = std::numeric_limits<double>::infinity();
+    EXPECT_THROW(weld(soup), InvalidInput);
+}
+
+TEST(Geometry, FaceAndVertexNormalsOfABox) {
+    const Mesh mesh = test::box_mesh(2.0, 3.0, 4.0);
+    const Connectivity c = build_connectivity(mesh);
+    const std::vector<Vec3> fn = face_normals(mesh);
+    EXPECT_TRUE(fn[0].isApprox(Vec3(0, 0, -1)));
+    EXPECT_TRUE(fn[2].isApprox(Vec3(0, 0, 1)));
+    const std::vector<Vec3> vn = vertex_normals(mesh, c, fn);
+    // At every box corner the three faces meet at right angles: the mean is the diagonal.
+    for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+        const Vec3 outward = (mesh.positions[v] - Vec3(1.0, 1.5, 2.0)).cwiseSign();
+        EXPECT_NEAR(vn[v].dot(outward.normalized()), 1.0, 1e-12) << "vertex " << v;
+    }
+}
+
+TEST(Geometry, AngleIsAccurateNearZeroAndStraight) {
+    EXPECT_NEAR(angle_deg(Vec3(1, 0, 0), Vec3(1, 1e-9, 0).normalized()), 1e-9 * 180 / M_PI, 1e-15);
+    EXPECT_NEAR(angle_deg(Vec3(1, 0, 0), Vec3(-1, 0, 0)), 180.0, 1e-12);
+    EXPECT_NEAR(angle_deg(Vec3(1, 0, 0), Vec3(0, 0, 1)), 90.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace resharp
