@@ -14,6 +14,6 @@ IoError::IoError(std::string path, const std::string& reason)
     : Error(path + ": " + reason), path_(std::move(path)) {}
 
 ParseError::ParseError(std::string path, FileLocation location, const std::string& reason)
-    : IoError(std::move(path), describe(location) + ": " + reason), location_(location) {}
+    : ReadError(std::move(path), describe(location) + ": " + reason), location_(location) {}
 
 }  // namespace resharp

@@ -21,6 +21,7 @@ public:
 };
 
 /// A file could not be opened, read or written. what() starts with the path.
+/// Readers throw ReadError or ParseError, writers WriteError.
 class IoError : public Error {
 public:
     IoError(std::string path, const std::string& reason);
@@ -28,6 +29,18 @@ public:
 
 private:
     std::string path_;
+};
+
+/// An input file could not be opened or read (missing, unreadable, unknown format, empty).
+class ReadError : public IoError {
+public:
+    using IoError::IoError;
+};
+
+/// An output file could not be written or moved into place.
+class WriteError : public IoError {
+public:
+    using IoError::IoError;
 };
 
 /// Where in a file a parse error was found.
@@ -41,7 +54,7 @@ struct FileLocation {
 };
 
 /// A file is malformed. what() reads "PATH: line N: REASON" or "PATH: byte N: REASON".
-class ParseError : public IoError {
+class ParseError : public ReadError {
 public:
     ParseError(std::string path, FileLocation location, const std::string& reason);
     FileLocation location() const { return location_; }
