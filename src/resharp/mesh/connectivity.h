@@ -44,6 +44,18 @@ struct Connectivity {
     }
 };
 
+/// Calls visit(j) for every vertex j != v that shares a face with v. A neighbour reached
+/// through two faces is visited twice: callers that count must deduplicate.
+template <class Visit>
+void for_each_ring_vertex(const Mesh& mesh, const Connectivity& connectivity, Index v,
+                          Visit&& visit) {
+    for (Index f : connectivity.faces_around(v)) {
+        for (Index j : mesh.triangles[f]) {
+            if (j != v) visit(j);
+        }
+    }
+}
+
 /// Builds twins and rings. Takes any mesh with valid indices; defects are classified in
 /// edge_kind, never thrown.
 Connectivity build_connectivity(const Mesh& mesh);

@@ -1,32 +1,12 @@
 #include "resharp/mesh/diagnostics.h"
 
 #include <algorithm>
-#include <numeric>
 
+#include "resharp/core/disjoint_sets.h"
 #include "resharp/mesh/geometry.h"
 
 namespace resharp {
 namespace {
-
-/// Union-find with path halving; deterministic because roots are chosen by index.
-class DisjointSets {
-public:
-    explicit DisjointSets(std::size_t n) : parent_(n) {
-        std::iota(parent_.begin(), parent_.end(), Index{0});
-    }
-    Index find(Index x) {
-        while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-        return x;
-    }
-    void unite(Index a, Index b) {
-        a = find(a);
-        b = find(b);
-        if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-    }
-
-private:
-    std::vector<Index> parent_;
-};
 
 /// True for the lowest-numbered half-edge of the undirected edge under h, so that an edge held by
 /// several faces is counted once.

@@ -1,0 +1,61 @@
+#include "resharp/curvature/local_height.h"
+
+#include <algorithm>
+#include <limits>
+
+#include <tbb/parallel_for.h>
+
+namespace resharp {
+
+double median_edge_length(const Mesh& mesh) {
+    if (mesh.triangles.empty()) return 0.0;
+    // A sample of at most ~64k edges is plenty for a median and keeps this O(F) at worst.
+    const std::size_t stride = std::max<std::size_t>(1, mesh.face_count() / 65536);
+    std::vector<double> lengths;
+    lengths.reserve(3 * (mesh.face_count() / stride + 1));
+    for (std::size_t f = 0; f < mesh.face_count(); f += stride) {
+        const Triangle& t = mesh.triangles[f];
+        for (int k = 0; k < 3; ++k) {
+            lengths.push_back((mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]]).norm());
+        }
+    }
+    const auto middle = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
+    std::nth_element(lengths.begin(), middle, lengths.end());
+    return *middle;
+}
+
+PrincipalCurvatures estimate_principal_curvatures(const Mesh& mesh,
+                                                  const Connectivity& connectivity,
+                                                  const std::vector<Vec3>& vertex_normals) {
+    const std::size_t nv = mesh.vertex_count();
+    PrincipalCurvatures result{std::vector<double>(nv, 0.0), std::vector<double>(nv, 0.0)};
+    const double typical_length = median_edge_length(mesh);
+    const double limit = typical_length > 0.0 ? 2.0 / typical_length : 0.0;
+
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, 4096), [&](const auto& range) {
+        for (std::size_t v = range.begin(); v != range.end(); ++v) {
+            const Vec3& n = vertex_normals[v];
+            const Vec3& x = mesh.positions[v];
+            double lo = std::numeric_limits<double>::infinity();
+            double hi = -lo;
+            for (Index f : connectivity.faces_around(static_cast<Index>(v))) {
+                for (Index j : mesh.triangles[f]) {
+                    if (j == v) continue;
+                    const Vec3 d = mesh.positions[j] - x;
+                    const double length2 = d.squaredNorm();
+                    if (length2 == 0.0) continue;
+                    const double kappa = std::clamp(-2.0 * d.dot(n) / length2, -limit, limit);
+                    lo = std::min(lo, kappa);
+                    hi = std::max(hi, kappa);
+                }
+            }
+            if (lo <= hi && !n.isZero(0.0)) {
+                result.k1[v] = lo;
+                result.k2[v] = hi;
+            }
+        }
+    });
+    return result;
+}
+
+}  // namespace resharp

@@ -1,0 +1,19 @@
+#pragma once
+/// Every parameter of the method, one struct per stage, defaults from the paper.
+///   restore(mesh, {.features = {.max_normal_angle_deg = 6.0}});
+
+#include "resharp/restoration/sharp_points.h"
+#include "resharp/segmentation/edge_segmentation.h"
+#include "resharp/segmentation/feature_segmentation.h"
+
+namespace resharp {
+
+struct RestoreOptions {
+    EdgeSegmentationOptions edges;        ///< paper §3: eps_K, P, flatness
+    FeatureSegmentationOptions features;  ///< paper §4: eps_theta, tiny patch size, merging
+    SharpPointOptions points;             ///< paper §5.3: spike angle
+    /// Worker threads; 0 means all cores. The output does not depend on it.
+    int threads = 0;
+};
+
+}  // namespace resharp

@@ -1,0 +1,72 @@
+#pragma once
+/// What restore() found and did, stage by stage, with wall times.
+
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <string_view>
+
+#include "resharp/mesh/diagnostics.h"
+
+namespace resharp {
+
+/// The stages in the order restore() runs them. The paper's Table 1 groups them as edge-based
+/// segmentation (Curvature, EdgeSegmentation), feature-based segmentation
+/// (FeatureSegmentation) and edge and corner restoration (the rest).
+enum class Stage {
+    MeshBuilding,         ///< adjacency, diagnostics, normals
+    Curvature,            ///< local height intensity
+    EdgeSegmentation,     ///< k-means and refinement
+    FeatureSegmentation,  ///< region growing, bands, tiny patches, merging
+    Classification,       ///< edge and corner triangles
+    FeatureNormals,       ///< eq. 5.1
+    SharpPoints,          ///< eq. 5.2-5.5 and the spike test
+    Split,                ///< re-triangulation
+};
+inline constexpr std::size_t kStageCount = 8;
+
+std::string_view stage_name(Stage stage);
+
+struct RestoreReport {
+    MeshDiagnostics input;  ///< defects of the input mesh; processing goes on where it can
+
+    std::size_t input_vertices = 0;
+    std::size_t input_triangles = 0;
+    std::size_t output_vertices = 0;
+    std::size_t output_triangles = 0;
+
+    std::size_t edge_vertices = 0;             ///< after refinement (§3)
+    std::size_t clustered_edge_vertices = 0;   ///< straight out of k-means
+    std::size_t isolated_edge_vertices_removed = 0;
+    std::size_t bridge_vertices_added = 0;
+    std::size_t flat_edge_vertices_removed = 0;
+    int kmeans_iterations = 0;
+
+    std::size_t feature_patches = 0;   ///< after absorbing and merging
+    std::size_t grown_patches = 0;     ///< straight out of region growing
+    std::size_t band_patches = 0;      ///< grown patches recognised as chamfer bands
+    std::size_t tiny_patches_absorbed = 0;
+    std::size_t patch_merges = 0;
+
+    std::size_t crossing_edges = 0;
+    std::size_t edge_triangles = 0;
+    std::size_t corner_triangles = 0;
+
+    std::size_t edge_points_inserted = 0;
+    std::size_t corner_points_inserted = 0;
+    std::size_t refused_by_flip_test = 0;    ///< eq. 5.4
+    std::size_t refused_by_spike_test = 0;   ///< §5.3
+    std::size_t refused_missing_normal = 0;  ///< a vertex with no face on its own feature
+    std::size_t refused_by_quality = 0;      ///< a split piece would flip or collapse
+    std::size_t split_triangles = 0;
+
+    /// Wall time per stage, indexed by Stage.
+    std::array<std::chrono::nanoseconds, kStageCount> stage_time{};
+    std::chrono::nanoseconds total_time{};
+
+    std::chrono::nanoseconds time(Stage stage) const {
+        return stage_time[static_cast<std::size_t>(stage)];
+    }
+};
+
+}  // namespace resharp

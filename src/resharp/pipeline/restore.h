@@ -1,0 +1,27 @@
+#pragma once
+/// The one entry point: the whole method of the paper on an indexed triangle mesh.
+
+#include "resharp/mesh/mesh.h"
+#include "resharp/pipeline/options.h"
+#include "resharp/pipeline/report.h"
+
+namespace resharp {
+
+struct RestoreResult {
+    /// The restored mesh: the input vertices first, unchanged and in order, then the new points
+    /// on sharp edges and corners; faces in input order, each unchanged or replaced in place by
+    /// its pieces.
+    Mesh mesh;
+    RestoreReport report;
+};
+
+/// Paper §3-§5: finds the chamfer bands a grid-based simulation leaves along sharp edges and
+/// corners and restores the sharp edges by inserting points on them. Input vertices never move.
+/// Defects (boundaries, non-manifold edges, degenerate faces) are counted in the report and
+/// left unchanged; restoration goes on elsewhere. The same input and options give the same
+/// output whatever the thread count.
+/// \throws InvalidInput if the mesh has no triangles, an index out of range or a non-finite
+///         coordinate, or an option is out of range.
+RestoreResult restore(const Mesh& input, const RestoreOptions& options = {});
+
+}  // namespace resharp

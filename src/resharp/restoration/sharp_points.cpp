@@ -1,0 +1,140 @@
+#include "resharp/restoration/sharp_points.h"
+
+#include <Eigen/LU>
+
+#include "resharp/core/errors.h"
+#include "resharp/mesh/geometry.h"
+
+namespace resharp {
+namespace {
+
+/// Below this |sin| between two unit normals the planes are treated as parallel: the edge point
+/// would move by more than about 1e6 edge lengths per unit of normal error.
+constexpr double kParallelSine = 1e-6;
+
+std::optional<Vec3> solve_planes(const Eigen::Matrix3d& normals, const Vec3& offsets) {
+    // Rows are unit vectors, so |det| is the volume they span: a scale-free conditioning test.
+    if (std::abs(normals.determinant()) < kParallelSine) return std::nullopt;
+    return Vec3(normals.partialPivLu().solve(offsets));
+}
+
+}  // namespace
+
+std::optional<Vec3> edge_point(const Vec3& a, const Vec3& n_a, const Vec3& b, const Vec3& n_b) {
+    const Vec3 direction = n_a.cross(n_b);
+    const double sine = direction.norm();
+    if (sine < kParallelSine) return std::nullopt;
+    const Vec3 d = direction / sine;
+    Eigen::Matrix3d rows;
+    rows << n_a.transpose(), n_b.transpose(), d.transpose();
+    return solve_planes(rows, Vec3(n_a.dot(a), n_b.dot(b), d.dot(0.5 * (a + b))));
+}
+
+bool passes_flip_test(const Vec3& a, const Vec3& n_a, const Vec3& b, const Vec3& n_b) {
+    const Vec3 cross = n_a.cross(n_b);
+    const double sine = cross.norm();
+    if (sine < kParallelSine) return false;
+    const Vec3 n2 = cross / sine;                      // eq. 5.5: N_2, the edge direction
+    const Vec3 d = (b - a) - (b - a).dot(n2) * n2;     // D: a-b seen in the section normal to N_2
+    const Vec3 n20 = n2.cross(n_a);                    // trace of plane a in that section
+    const Vec3 n21 = n2.cross(n_b);                    // trace of plane b
+    return n20.cross(d).dot(n2) * n21.cross(d).dot(n2) < 0.0;  // eq. 5.4
+}
+
+std::optional<Vec3> corner_point(const Vec3& a, const Vec3& n_a, const Vec3& b, const Vec3& n_b,
+                                 const Vec3& c, const Vec3& n_c) {
+    Eigen::Matrix3d rows;
+    rows << n_a.transpose(), n_b.transpose(), n_c.transpose();
+    return solve_planes(rows, Vec3(n_a.dot(a), n_b.dot(b), n_c.dot(c)));
+}
+
+namespace {
+
+void place_edge_points(const Mesh& mesh, const Connectivity& c, const BandClassification& bands,
+                       const std::vector<Vec3>& normals, SharpPoints& out) {
+    for (Index h = 0; h < bands.is_crossing.size(); ++h) {
+        const Index twin = c.twin[h];
+        if (!bands.is_crossing[h] || twin < h) continue;  // each edge once, from its lower half
+        const Index u = tail_vertex(mesh, h);
+        const Index v = head_vertex(mesh, h);
+        const Vec3& a = mesh.positions[u];
+        const Vec3& b = mesh.positions[v];
+        if (normals[u].isZero(0.0) || normals[v].isZero(0.0)) {
+            ++out.missing_normal;
+            continue;
+        }
+        const std::optional<Vec3> m = edge_point(a, normals[u], b, normals[v]);
+        if (!m || !passes_flip_test(a, normals[u], b, normals[v])) {
+            ++out.refused_by_flip_test;
+            continue;
+        }
+        out.edge_point[h] = out.edge_point[twin] = static_cast<Index>(out.points.size());
+        out.points.push_back(*m);
+        ++out.edge_points;
+    }
+}
+
+/// §5.3: the normals around a corner triangle are its vertices' feature normals and the normals
+/// of the three faces across its edges; nearly opposite ones mean a spike.
+bool is_spike(const Connectivity& c, const std::vector<Vec3>& face_normals,
+              const std::array<Vec3, 3>& vertex_normals, Index f, double spike_angle_deg) {
+    std::vector<Vec3> around(vertex_normals.begin(), vertex_normals.end());
+    for (Index k = 0; k < 3; ++k) {
+        const Index twin = c.twin[3 * f + k];
+        if (twin != kNoIndex && !face_normals[face_of(twin)].isZero(0.0)) {
+            around.push_back(face_normals[face_of(twin)]);
+        }
+    }
+    for (std::size_t i = 0; i < around.size(); ++i) {
+        for (std::size_t j = i + 1; j < around.size(); ++j) {
+            if (angle_deg(around[i], around[j]) > spike_angle_deg) return true;
+        }
+    }
+    return false;
+}
+
+void place_corner_points(const Mesh& mesh, const Connectivity& c,
+                         const std::vector<Vec3>& face_normals, const BandClassification& bands,
+                         const std::vector<Vec3>& normals, double spike_angle_deg,
+                         SharpPoints& out) {
+    for (Index f = 0; f < mesh.face_count(); ++f) {
+        if (bands.face_role[f] != BandRole::Corner) continue;
+        const Triangle& t = mesh.triangles[f];
+        const std::array<Vec3, 3> n{normals[t[0]], normals[t[1]], normals[t[2]]};
+        if (n[0].isZero(0.0) || n[1].isZero(0.0) || n[2].isZero(0.0)) {
+            ++out.missing_normal;
+            continue;
+        }
+        const std::optional<Vec3> m =
+            corner_point(mesh.positions[t[0]], n[0], mesh.positions[t[1]], n[1],
+                         mesh.positions[t[2]], n[2]);
+        if (!m || is_spike(c, face_normals, n, f, spike_angle_deg)) {
+            ++out.refused_by_spike_test;
+            continue;
+        }
+        out.corner_point[f] = static_cast<Index>(out.points.size());
+        out.points.push_back(*m);
+        ++out.corner_points;
+    }
+}
+
+}  // namespace
+
+SharpPoints place_sharp_points(const Mesh& mesh, const Connectivity& connectivity,
+                               const std::vector<Vec3>& face_normals,
+                               const BandClassification& bands,
+                               const std::vector<Vec3>& feature_normals,
+                               const SharpPointOptions& options) {
+    if (!(options.spike_angle_deg > 0.0 && options.spike_angle_deg <= 180.0)) {
+        throw InvalidInput("spike angle must lie in (0, 180] degrees");
+    }
+    SharpPoints out;
+    out.edge_point.assign(connectivity.twin.size(), kNoIndex);
+    out.corner_point.assign(mesh.face_count(), kNoIndex);
+    place_edge_points(mesh, connectivity, bands, feature_normals, out);
+    place_corner_points(mesh, connectivity, face_normals, bands, feature_normals,
+                        options.spike_angle_deg, out);
+    return out;
+}
+
+}  // namespace resharp

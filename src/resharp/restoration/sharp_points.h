@@ -1,0 +1,60 @@
+#pragma once
+/// New points on the ideal sharp edges and corners (paper §5.2-5.3): one per crossing edge from
+/// the two feature normals (eq. 5.2), one per corner triangle from three (eq. 5.3), each kept
+/// only if it passes the flip test (eq. 5.4-5.5) or the spike test.
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "resharp/mesh/connectivity.h"
+#include "resharp/mesh/mesh.h"
+#include "resharp/restoration/band_classification.h"
+
+namespace resharp {
+
+struct SharpPointOptions {
+    /// §5.3: a corner point is refused when two of the normals around the corner triangle
+    /// differ by more than this (degrees): nearly opposite normals make a spike.
+    double spike_angle_deg = 150.0;
+};
+
+struct SharpPoints {
+    /// The new points: edge points in order of their edge's lower half-edge, then corner points
+    /// in face order.
+    std::vector<Vec3> points;
+    /// Per half-edge (#3F): index into points of the edge's point, on both half-edges of a
+    /// crossing edge that got one; kNoIndex elsewhere.
+    std::vector<Index> edge_point;
+    /// Per face (#F): index into points of the corner triangle's point, or kNoIndex.
+    std::vector<Index> corner_point;
+    std::size_t edge_points = 0;
+    std::size_t corner_points = 0;
+    std::size_t refused_by_flip_test = 0;   ///< crossing edges failing eq. 5.4 (incl. parallel normals)
+    std::size_t refused_by_spike_test = 0;  ///< corner triangles failing the spike test
+    std::size_t missing_normal = 0;         ///< crossing edges or corners with an unknown normal
+};
+
+/// Eq. 5.2: the point on both tangent planes (a, n_a) and (b, n_b) and on the plane through
+/// (a + b) / 2 normal to n_a x n_b; nullopt when the normals are parallel.
+std::optional<Vec3> edge_point(const Vec3& a, const Vec3& n_a, const Vec3& b, const Vec3& n_b);
+
+/// Eq. 5.4-5.5: true when the chamfer edge a-b runs between the two planes' traces in the
+/// section normal to the edge, i.e. the new point lies between a and b and the split triangles
+/// keep their orientation.
+bool passes_flip_test(const Vec3& a, const Vec3& n_a, const Vec3& b, const Vec3& n_b);
+
+/// Eq. 5.3: the common point of the three tangent planes; nullopt when they do not meet in
+/// one point.
+std::optional<Vec3> corner_point(const Vec3& a, const Vec3& n_a, const Vec3& b, const Vec3& n_b,
+                                 const Vec3& c, const Vec3& n_c);
+
+/// Takes the classification and the feature normals (#V) and gives the accepted points.
+/// \throws InvalidInput if an option is out of range.
+SharpPoints place_sharp_points(const Mesh& mesh, const Connectivity& connectivity,
+                               const std::vector<Vec3>& face_normals,
+                               const BandClassification& bands,
+                               const std::vector<Vec3>& feature_normals,
+                               const SharpPointOptions& options = {});
+
+}  // namespace resharp

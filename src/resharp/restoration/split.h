@@ -1,0 +1,33 @@
+#pragma once
+/// The split (paper §5.2, after Attene et al.'s EdgeSharpener): every accepted edge point is
+/// inserted on its crossing edge and every corner point inside its corner triangle, and the
+/// faces are re-triangulated so that consecutive new points are joined by mesh edges. The
+/// restored sharp edge is then a chain of mesh edges, a crease that viewers show as one line.
+
+#include <vector>
+
+#include "resharp/mesh/connectivity.h"
+#include "resharp/mesh/mesh.h"
+#include "resharp/restoration/sharp_points.h"
+
+namespace resharp {
+
+struct SplitReport {
+    std::size_t refused_by_quality = 0;  ///< points dropped because a piece would flip or collapse
+    std::size_t split_faces = 0;         ///< input faces replaced by pieces
+    std::size_t new_vertices = 0;
+    std::size_t output_faces = 0;
+};
+
+/// Takes the mesh, its connectivity, unit face normals (#F), feature normals (#V) and the points
+/// of place_sharp_points. First drops, repeatedly, every point of a face whose pieces would
+/// collapse or turn against the face or against a feature normal, so that no output triangle is
+/// flipped; dropped points are removed from `points` (set to kNoIndex). Then builds the output:
+/// the input vertices first, unchanged and in order, then the surviving points in `points`
+/// order; each face in input order, either unchanged or replaced by its pieces.
+Mesh split_band_triangles(const Mesh& mesh, const Connectivity& connectivity,
+                          const std::vector<Vec3>& face_normals,
+                          const std::vector<Vec3>& feature_normals, SharpPoints& points,
+                          SplitReport& report);
+
+}  // namespace resharp

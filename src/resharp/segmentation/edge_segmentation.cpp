@@ -1,0 +1,212 @@
+#include "resharp/segmentation/edge_segmentation.h"
+
+#include <algorithm>
+#include <deque>
+#include <string>
+
+#include "resharp/core/disjoint_sets.h"
+#include "resharp/core/errors.h"
+#include "resharp/mesh/geometry.h"
+#include "resharp/segmentation/kmeans.h"
+
+namespace resharp {
+namespace {
+
+void validate(const EdgeSegmentationOptions& o) {
+    if (!(o.kmeans_tolerance > 0.0)) throw InvalidInput("kmeans tolerance must be positive");
+    if (o.max_kmeans_iterations < 1) throw InvalidInput("k-means needs at least one iteration");
+    if (o.max_bridge_walk < 0) throw InvalidInput("bridge walk length must not be negative");
+    if (!(o.flat_normal_spread_deg >= 0.0 && o.flat_normal_spread_deg <= 180.0)) {
+        throw InvalidInput("flat normal spread must lie in [0, 180] degrees");
+    }
+}
+
+/// Initial centres (§3.2): the flat centre is the componentwise median of (k1, k2), since most
+/// of a machined part is smooth; the edge centre is the mean of the 10% of points farthest
+/// from it. Starting the edge centre at a single extreme point would let one sliver capture it.
+std::array<Eigen::Vector2d, 2> initial_centres(std::vector<Eigen::Vector2d> points) {
+    const auto middle = points.begin() + static_cast<std::ptrdiff_t>(points.size() / 2);
+    std::nth_element(points.begin(), middle, points.end(),
+                     [](const auto& a, const auto& b) { return a.x() < b.x(); });
+    const double k1 = middle->x();
+    std::nth_element(points.begin(), middle, points.end(),
+                     [](const auto& a, const auto& b) { return a.y() < b.y(); });
+    const Eigen::Vector2d flat(k1, middle->y());
+
+    const std::size_t far_count = std::max<std::size_t>(1, points.size() / 10);
+    const auto far_end = points.begin() + static_cast<std::ptrdiff_t>(far_count);
+    std::nth_element(points.begin(), far_end - 1, points.end(), [&](const auto& a, const auto& b) {
+        return (a - flat).squaredNorm() > (b - flat).squaredNorm();
+    });
+    Eigen::Vector2d edge = Eigen::Vector2d::Zero();
+    for (auto it = points.begin(); it != far_end; ++it) edge += *it;
+    return {flat, edge / static_cast<double>(far_count)};
+}
+
+/// Clusters (k1, k2); the cluster whose centre lies farther from zero curvature is "edge".
+std::vector<std::uint8_t> cluster_edge_vertices(const PrincipalCurvatures& k,
+                                                const EdgeSegmentationOptions& o,
+                                                int& iterations) {
+    std::vector<Eigen::Vector2d> points(k.k1.size());
+    for (std::size_t v = 0; v < points.size(); ++v) points[v] = {k.k1[v], k.k2[v]};
+    std::vector<std::uint8_t> is_edge(points.size(), 0);
+    if (points.empty()) return is_edge;
+    const TwoMeansResult r =
+        two_means(points, initial_centres(points), o.kmeans_tolerance, o.max_kmeans_iterations);
+    iterations = r.iterations;
+    if ((r.centres[0] - r.centres[1]).norm() < o.kmeans_tolerance) return is_edge;  // all alike
+    const std::uint8_t edge_cluster = r.centres[1].norm() > r.centres[0].norm() ? 1 : 0;
+    for (std::size_t v = 0; v < points.size(); ++v) is_edge[v] = r.cluster[v] == edge_cluster;
+    return is_edge;
+}
+
+std::size_t remove_isolated(const Mesh& mesh, const Connectivity& c,
+                            std::vector<std::uint8_t>& is_edge) {
+    std::vector<Index> isolated;
+    for (Index v = 0; v < is_edge.size(); ++v) {
+        if (!is_edge[v]) continue;
+        bool has_edge_neighbour = false;
+        for_each_ring_vertex(mesh, c, v, [&](Index j) { has_edge_neighbour |= is_edge[j] != 0; });
+        if (!has_edge_neighbour) isolated.push_back(v);
+    }
+    for (Index v : isolated) is_edge[v] = 0;
+    return isolated.size();
+}
+
+/// Labels the connected pieces of the edge-vertex graph (kNoIndex for non-edge vertices).
+std::vector<Index> label_edge_pieces(const Mesh& mesh, const Connectivity& c,
+                                     const std::vector<std::uint8_t>& is_edge) {
+    std::vector<Index> piece(is_edge.size(), kNoIndex);
+    std::vector<Index> stack;
+    Index next = 0;
+    for (Index seed = 0; seed < is_edge.size(); ++seed) {
+        if (!is_edge[seed] || piece[seed] != kNoIndex) continue;
+        piece[seed] = next;
+        stack.push_back(seed);
+        while (!stack.empty()) {
+            const Index v = stack.back();
+            stack.pop_back();
+            for_each_ring_vertex(mesh, c, v, [&](Index j) {
+                if (is_edge[j] && piece[j] == kNoIndex) {
+                    piece[j] = next;
+                    stack.push_back(j);
+                }
+            });
+        }
+        ++next;
+    }
+    return piece;
+}
+
+/// An end of a broken edge: an edge vertex with at most one distinct edge neighbour.
+bool is_edge_end(const Mesh& mesh, const Connectivity& c, const std::vector<std::uint8_t>& is_edge,
+                 Index v) {
+    Index first = kNoIndex;
+    bool second = false;
+    for_each_ring_vertex(mesh, c, v, [&](Index j) {
+        if (!is_edge[j]) return;
+        if (first == kNoIndex) first = j;
+        else if (j != first) second = true;
+    });
+    return !second;
+}
+
+/// §3.3: from each end of a broken edge, a breadth-first walk through at most `max_walk`
+/// non-edge vertices; when it reaches another piece of edge, the path becomes edge.
+std::size_t bridge_broken_edges(const Mesh& mesh, const Connectivity& c, int max_walk,
+                                std::vector<std::uint8_t>& is_edge) {
+    std::vector<Index> first_piece = label_edge_pieces(mesh, c, is_edge);
+    DisjointSets pieces(is_edge.size());
+    auto piece_of = [&](Index v) { return pieces.find(first_piece[v]); };
+    std::vector<Index> parent(is_edge.size(), kNoIndex);
+    std::vector<Index> touched;
+    std::deque<Index> queue;
+    std::size_t added = 0;
+    for (Index end = 0; end < is_edge.size(); ++end) {
+        if (!is_edge[end] || !is_edge_end(mesh, c, is_edge, end)) continue;
+        queue.assign(1, end);
+        parent[end] = end;
+        touched.assign(1, end);
+        int walked = 0;
+        Index reached = kNoIndex;
+        while (!queue.empty() && reached == kNoIndex && walked <= max_walk) {
+            const Index v = queue.front();
+            queue.pop_front();
+            if (v != end) ++walked;
+            for_each_ring_vertex(mesh, c, v, [&](Index j) {
+                if (reached != kNoIndex || parent[j] != kNoIndex) return;
+                if (is_edge[j]) {
+                    if (piece_of(j) != piece_of(end)) {
+                        parent[j] = v;
+                        touched.push_back(j);
+                        reached = j;
+                    }
+                    return;
+                }
+                parent[j] = v;
+                touched.push_back(j);
+                queue.push_back(j);
+            });
+        }
+        if (reached != kNoIndex) {
+            pieces.unite(piece_of(reached), piece_of(end));
+            for (Index v = parent[reached]; v != end; v = parent[v]) {
+                is_edge[v] = 1;
+                first_piece[v] = first_piece[end];
+                ++added;
+            }
+        }
+        for (Index v : touched) parent[v] = kNoIndex;
+    }
+    return added;
+}
+
+double largest_ring_normal_angle(const Connectivity& c, const std::vector<Vec3>& face_normals,
+                                 Index v) {
+    const auto ring = c.faces_around(v);
+    double largest = 0.0;
+    for (std::size_t a = 0; a < ring.size(); ++a) {
+        if (face_normals[ring[a]].isZero(0.0)) continue;
+        for (std::size_t b = a + 1; b < ring.size(); ++b) {
+            if (face_normals[ring[b]].isZero(0.0)) continue;
+            largest = std::max(largest, angle_deg(face_normals[ring[a]], face_normals[ring[b]]));
+        }
+    }
+    return largest;
+}
+
+std::size_t remove_flat(const Connectivity& c, const std::vector<Vec3>& face_normals,
+                        double spread_deg, std::vector<std::uint8_t>& is_edge) {
+    std::size_t removed = 0;
+    for (Index v = 0; v < is_edge.size(); ++v) {
+        if (is_edge[v] && largest_ring_normal_angle(c, face_normals, v) < spread_deg) {
+            is_edge[v] = 0;
+            ++removed;
+        }
+    }
+    return removed;
+}
+
+}  // namespace
+
+std::size_t EdgeSegmentation::edge_vertex_count() const {
+    return static_cast<std::size_t>(std::count(is_edge.begin(), is_edge.end(), 1));
+}
+
+EdgeSegmentation segment_edges(const Mesh& mesh, const Connectivity& connectivity,
+                               const PrincipalCurvatures& curvatures,
+                               const std::vector<Vec3>& face_normals,
+                               const EdgeSegmentationOptions& options) {
+    validate(options);
+    EdgeSegmentation s;
+    s.is_edge = cluster_edge_vertices(curvatures, options, s.kmeans_iterations);
+    s.clustered_edge_vertices = s.edge_vertex_count();
+    s.isolated_removed = remove_isolated(mesh, connectivity, s.is_edge);
+    s.bridge_vertices_added =
+        bridge_broken_edges(mesh, connectivity, options.max_bridge_walk, s.is_edge);
+    s.flat_removed =
+        remove_flat(connectivity, face_normals, options.flat_normal_spread_deg, s.is_edge);
+    return s;
+}
+
+}  // namespace resharp

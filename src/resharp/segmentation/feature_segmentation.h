@@ -1,0 +1,53 @@
+#pragma once
+/// Feature-based segmentation (paper §4): faces are grown into patches of similar normal, the
+/// one-triangle-wide chamfer bands are set apart as edge regions (the paper's combination with
+/// the edge-based result), tiny patches are absorbed, over-segmented patches are merged
+/// greedily, and every vertex joins the patch with the most faces in its one-ring.
+
+#include <cstdint>
+#include <vector>
+
+#include "resharp/mesh/connectivity.h"
+#include "resharp/mesh/mesh.h"
+
+namespace resharp {
+
+struct FeatureSegmentationOptions {
+    /// eps_theta, §4 step 2: neighbouring faces whose normals differ less than this (degrees)
+    /// grow into one patch.
+    double max_normal_angle_deg = 8.0;
+    /// §4: patches with fewer faces than this are tiny and absorbed by a neighbour.
+    std::size_t tiny_patch_faces = 25;
+    /// A patch is a chamfer band (an edge region, not a feature) when fewer than this share of
+    /// its vertices are interior to it and at least half are edge vertices: a band is one
+    /// triangle wide, a real face of two grid cells or more has a row of interior vertices.
+    double band_interior_fraction = 0.1;
+    /// Greedy merging, §4 and Fig. 5: two touching patches whose normals, compared at the
+    /// vertices they share, differ by less than this (degrees, median over the border) are one
+    /// surface that region growing split.
+    double merge_angle_deg = 15.0;
+};
+
+struct FeatureSegmentation {
+    /// Per face (#F): feature patch id in [0, patch_count), or kNoIndex for faces of chamfer
+    /// bands (edge regions).
+    std::vector<Index> face_patch;
+    /// Per vertex (#V): the feature patch with the most faces in the vertex's one-ring, or
+    /// kNoIndex when no incident face belongs to a feature patch.
+    std::vector<Index> vertex_patch;
+    std::size_t patch_count = 0;        ///< feature patches after absorbing and merging
+    std::size_t grown_patches = 0;      ///< patches straight out of region growing
+    std::size_t band_patches = 0;       ///< grown patches recognised as chamfer bands
+    std::size_t tiny_absorbed = 0;      ///< tiny patches absorbed by a neighbour
+    std::size_t merges = 0;             ///< greedy merges of over-segmented patches
+};
+
+/// Takes the mesh, its connectivity, unit face normals (#F; zero for degenerate faces, which
+/// never join a patch by growing) and the edge-vertex labels of segment_edges (#V).
+/// \throws InvalidInput if an option is out of range.
+FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& connectivity,
+                                     const std::vector<Vec3>& face_normals,
+                                     const std::vector<std::uint8_t>& is_edge_vertex,
+                                     const FeatureSegmentationOptions& options = {});
+
+}  // namespace resharp

@@ -1,0 +1,25 @@
+#pragma once
+/// Two-means clustering of 2-D points (paper eq. 3.1-3.2), used on (k1, k2) per vertex.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace resharp {
+
+struct TwoMeansResult {
+    std::vector<std::uint8_t> cluster;  ///< per point: 0 or 1
+    std::array<Eigen::Vector2d, 2> centres;
+    int iterations = 0;
+};
+
+/// Lloyd iterations from the given initial centres until both centres move less than
+/// `tolerance` (eq. 3.2) or `max_iterations` is reached. Sequential sums keep the result
+/// bit-identical from run to run.
+TwoMeansResult two_means(const std::vector<Eigen::Vector2d>& points,
+                         std::array<Eigen::Vector2d, 2> initial_centres, double tolerance,
+                         int max_iterations);
+
+}  // namespace resharp
