@@ -54,7 +54,7 @@ void place_edge_points(const Mesh& mesh, const Connectivity& c, const BandClassi
                        const std::vector<Vec3>& normals, SharpPoints& out) {
     for (Index h = 0; h < bands.is_crossing.size(); ++h) {
         const Index twin = c.twin[h];
-        if (!bands.is_crossing[h] || twin < h) continue;  // each edge once, from its lower half
+        if (!bands.is_crossing[h] || twin == kNoIndex || twin < h) continue;  // each edge once
         const Index u = tail_vertex(mesh, h);
         const Index v = head_vertex(mesh, h);
         const Vec3& a = mesh.positions[u];
