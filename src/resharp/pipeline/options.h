@@ -14,6 +14,9 @@ struct RestoreOptions {
     SharpPointOptions points;             ///< paper §5.3: spike angle
     /// Worker threads; 0 means all cores. The output does not depend on it.
     int threads = 0;
+    /// Also return the per-vertex and per-face labels of both segmentations (for viewing what
+    /// was detected, and for evaluation). Costs about 10 bytes per element.
+    bool keep_segmentation = false;
 };
 
 }  // namespace resharp

@@ -56,8 +56,8 @@ void validate_mesh(const Mesh& mesh) {
 /// Runs the stages in order and times each; the one place that sequences them.
 class Pipeline {
 public:
-    Pipeline(const Mesh& mesh, const RestoreOptions& options, RestoreReport& report)
-        : mesh_(mesh), options_(options), report_(report) {}
+    Pipeline(const Mesh& mesh, const RestoreOptions& options, RestoreResult& result)
+        : mesh_(mesh), options_(options), report_(result.report), result_(result) {}
 
     Mesh run() {
         Connectivity connectivity;
@@ -88,6 +88,7 @@ public:
             bands = classify_bands(mesh_, connectivity, face_normals, edges.is_edge,
                                    features.vertex_patch);
         });
+        if (options_.keep_segmentation) keep(edges, features, bands);
         report_.crossing_edges = bands.crossing_edges;
         report_.edge_triangles = bands.edge_triangles;
         report_.corner_triangles = bands.corner_triangles;
@@ -121,6 +122,12 @@ private:
         report_.stage_time[static_cast<std::size_t>(stage)] = timer.elapsed();
     }
 
+    void keep(const EdgeSegmentation& edges, const FeatureSegmentation& features,
+              const BandClassification& bands) {
+        result_.segmentation = {edges.is_edge, features.vertex_patch, features.face_patch,
+                                bands.face_role};
+    }
+
     void record(const EdgeSegmentation& s) {
         report_.edge_vertices = s.edge_vertex_count();
         report_.clustered_edge_vertices = s.clustered_edge_vertices;
@@ -150,6 +157,7 @@ private:
     const Mesh& mesh_;
     const RestoreOptions& options_;
     RestoreReport& report_;
+    RestoreResult& result_;
 };
 
 }  // namespace
@@ -163,7 +171,7 @@ RestoreResult restore(const Mesh& input, const RestoreOptions& options) {
     report.input_triangles = input.face_count();
     const StageTimer total;
     tbb::task_arena arena(options.threads == 0 ? tbb::task_arena::automatic : options.threads);
-    arena.execute([&] { result.mesh = Pipeline(input, options, report).run(); });
+    arena.execute([&] { result.mesh = Pipeline(input, options, result).run(); });
     report.total_time = total.elapsed();
     report.output_vertices = result.mesh.vertex_count();
     report.output_triangles = result.mesh.face_count();

@@ -1,11 +1,23 @@
 #pragma once
 /// The one entry point: the whole method of the paper on an indexed triangle mesh.
 
+#include <cstdint>
+#include <vector>
+
 #include "resharp/mesh/mesh.h"
+#include "resharp/restoration/band_classification.h"
 #include "resharp/pipeline/options.h"
 #include "resharp/pipeline/report.h"
 
 namespace resharp {
+
+/// What both segmentations found, on the input mesh's elements.
+struct Segmentation {
+    std::vector<std::uint8_t> is_edge_vertex;  ///< per input vertex (#V): edge-based result, §3
+    std::vector<Index> vertex_patch;  ///< per input vertex (#V): feature patch, or kNoIndex
+    std::vector<Index> face_patch;    ///< per input face (#F): feature patch, kNoIndex in bands
+    std::vector<BandRole> face_role;  ///< per input face (#F): edge or corner triangle
+};
 
 struct RestoreResult {
     /// The restored mesh: the input vertices first, unchanged and in order, then the new points
@@ -13,6 +25,8 @@ struct RestoreResult {
     /// its pieces.
     Mesh mesh;
     RestoreReport report;
+    /// Filled only when RestoreOptions::keep_segmentation is set.
+    Segmentation segmentation;
 };
 
 /// Paper §3-§5: finds the chamfer bands a grid-based simulation leaves along sharp edges and
