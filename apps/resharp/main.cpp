@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
                  "machining simulation turns into chamfer bands."};
     app.footer(kExitCodeHelp);
     app.require_subcommand(1);
+    add_restore_command(app);
 
     try {
         app.parse(argc, argv);

@@ -42,8 +42,10 @@ TEST(Split, OneCrossingEdgeSplitsBothFacesAtTheIdealPoint) {
     SharpPoints points = points_on_edge_a1_b0(s);
     ASSERT_EQ(points.edge_points, 1u);
     SplitReport report;
+    std::vector<Index> source;
     const Mesh out = split_band_triangles(s.mesh, s.connectivity, s.face_normals,
-                                          s.feature_normals, points, report);
+                                          s.feature_normals, points, report, source);
+    EXPECT_EQ(source, (std::vector<Index>{0, 0, 1, 1}));
     EXPECT_EQ(report.refused_by_quality, 0u);
     EXPECT_EQ(report.new_vertices, 1u);
     EXPECT_EQ(report.split_faces, 2u);
@@ -64,8 +66,9 @@ TEST(Split, DropsAPointWhoseSplitWouldTurnAPieceOver) {
     SharpPoints points = points_on_edge_a1_b0(s);
     points.points[0] = Vec3(-2.0, 3.0, 0.75);  // far off: pieces would flip
     SplitReport report;
+    std::vector<Index> source;
     const Mesh out = split_band_triangles(s.mesh, s.connectivity, s.face_normals,
-                                          s.feature_normals, points, report);
+                                          s.feature_normals, points, report, source);
     EXPECT_EQ(report.refused_by_quality, 1u);
     EXPECT_EQ(out.vertex_count(), 4u);
     EXPECT_EQ(out.triangles, s.mesh.triangles);

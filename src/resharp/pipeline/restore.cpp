@@ -108,7 +108,8 @@ public:
         Mesh output;
         timed(Stage::Split, [&] {
             SplitReport split;
-            output = split_band_triangles(mesh_, connectivity, face_normals, normals, points, split);
+            output = split_band_triangles(mesh_, connectivity, face_normals, normals, points, split,
+                                          result_.source_face);
             record(split, points);
         });
         return output;

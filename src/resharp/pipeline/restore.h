@@ -24,6 +24,9 @@ struct RestoreResult {
     /// on sharp edges and corners; faces in input order, each unchanged or replaced in place by
     /// its pieces.
     Mesh mesh;
+    /// Per output face (#F out): the input face it is or was cut from, so that callers can
+    /// carry face attributes (tool ids, colours) over.
+    std::vector<Index> source_face;
     RestoreReport report;
     /// Filled only when RestoreOptions::keep_segmentation is set.
     Segmentation segmentation;

@@ -180,7 +180,7 @@ std::vector<Index> number_surviving_points(const SharpPoints& p, Index first) {
 Mesh split_band_triangles(const Mesh& mesh, const Connectivity& connectivity,
                           const std::vector<Vec3>& face_normals,
                           const std::vector<Vec3>& feature_normals, SharpPoints& points,
-                          SplitReport& report) {
+                          SplitReport& report, std::vector<Index>& source_face) {
     const SplitVertices ids(mesh, points);
     report.refused_by_quality =
         drop_unsound_points(mesh, connectivity, face_normals, feature_normals, points, ids);
@@ -196,14 +196,18 @@ Mesh split_band_triangles(const Mesh& mesh, const Connectivity& connectivity,
 
     auto output_id = [&](Index id) { return ids.is_original(id) ? id : number[id - original_count]; };
     out.triangles.reserve(mesh.face_count() + 4 * report.new_vertices);
+    source_face.clear();
+    source_face.reserve(out.triangles.capacity());
     for (Index f = 0; f < mesh.face_count(); ++f) {
         if (!has_points(points, f)) {
             out.triangles.push_back(mesh.triangles[f]);
+            source_face.push_back(f);
             continue;
         }
         ++report.split_faces;
         emit_pieces(mesh, points, ids, f, [&](Index a, Index b, Index c) {
             out.triangles.push_back({output_id(a), output_id(b), output_id(c)});
+            source_face.push_back(f);
         });
     }
     report.output_faces = out.triangles.size();

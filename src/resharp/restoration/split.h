@@ -25,9 +25,10 @@ struct SplitReport {
 /// flipped; dropped points are removed from `points` (set to kNoIndex). Then builds the output:
 /// the input vertices first, unchanged and in order, then the surviving points in `points`
 /// order; each face in input order, either unchanged or replaced by its pieces.
+/// `source_face` receives, per output face, the input face it came from.
 Mesh split_band_triangles(const Mesh& mesh, const Connectivity& connectivity,
                           const std::vector<Vec3>& face_normals,
                           const std::vector<Vec3>& feature_normals, SharpPoints& points,
-                          SplitReport& report);
+                          SplitReport& report, std::vector<Index>& source_face);
 
 }  // namespace resharp

@@ -1,0 +1,103 @@
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "commands.h"
+#include "report_json.h"
+#include "resharp/io/atomic_file.h"
+#include "resharp/io/mesh_io.h"
+#include "resharp/pipeline/restore.h"
+#include "segments.h"
+
+namespace resharp::cli {
+namespace {
+
+struct RestoreArguments {
+    std::string input;
+    std::string output;
+    std::string report;
+    std::string segments;
+    bool ascii = false;
+    bool quiet = false;
+    RestoreOptions options;
+};
+
+/// One flag per field of RestoreOptions; the defaults shown by --help are the struct's own.
+void bind_options(CLI::App& command, RestoreOptions& o) {
+    command.add_option("--kmeans-tolerance", o.edges.kmeans_tolerance,
+                       "eps_K (paper eq. 3.2): k-means stops when centres move less (1/length)")
+        ->capture_default_str();
+    command.add_option("--max-kmeans-iterations", o.edges.max_kmeans_iterations,
+                       "safety bound on k-means iterations")
+        ->capture_default_str();
+    command.add_option("--bridge-walk", o.edges.max_bridge_walk,
+                       "P (paper 3.3): vertices a walk may visit to bridge a broken edge")
+        ->capture_default_str();
+    command.add_option("--flat-spread", o.edges.flat_normal_spread_deg,
+                       "edge vertices whose one-ring normals spread less (degrees) are flat")
+        ->capture_default_str();
+    command.add_option("--region-angle", o.features.max_normal_angle_deg,
+                       "eps_theta (paper 4): neighbouring faces closer than this (degrees) grow "
+                       "into one patch")
+        ->capture_default_str();
+    command.add_option("--tiny-patch", o.features.tiny_patch_faces,
+                       "patches with fewer faces are tiny and absorbed (paper 4)")
+        ->capture_default_str();
+    command.add_option("--band-interior-fraction", o.features.band_interior_fraction,
+                       "patches with fewer interior vertices than this share are chamfer bands")
+        ->capture_default_str();
+    command.add_option("--merge-angle", o.features.merge_angle_deg,
+                       "touching patches whose normals differ less (degrees) along their border "
+                       "are merged")
+        ->capture_default_str();
+    command.add_option("--spike-angle", o.points.spike_angle_deg,
+                       "corner points are refused when normals around the corner differ more "
+                       "(degrees, paper 5.3)")
+        ->capture_default_str();
+    command.add_option("--threads", o.threads, "worker threads, 0 for all cores; the output "
+                                               "does not depend on it")
+        ->capture_default_str();
+}
+
+void run_restore(const RestoreArguments& args) {
+    const Mesh input = weld(io::read_mesh(args.input));
+    RestoreOptions options = args.options;
+    options.keep_segmentation = !args.segments.empty();
+    const RestoreResult result = restore(input, options);
+
+    const io::WriteOptions encoding{.encoding = args.ascii ? io::Encoding::Ascii : io::Encoding::Binary};
+    io::write_mesh(args.output, result.mesh, encoding);
+    if (!args.segments.empty()) {
+        const SegmentColors colors = color_segments(result.segmentation);
+        io::write_mesh(args.segments, input, encoding,
+                       {.vertex_colors = colors.vertex, .face_colors = colors.face});
+    }
+    if (!args.report.empty()) {
+        const std::string json = report_to_json(result.report).dump(2) + "\n";
+        io::write_atomically(args.report, [&](std::ostream& out) { out << json; });
+    }
+    if (!args.quiet) std::cerr << summarize(result.report, args.input, args.output);
+}
+
+}  // namespace
+
+void add_restore_command(CLI::App& app) {
+    auto args = std::make_shared<RestoreArguments>();
+    CLI::App* command = app.add_subcommand(
+        "restore", "Restore sharp edges and corners of a mesh made by grid-based machining "
+                   "simulation. Formats from the extension: .stl (binary or ASCII), .obj, .ply, "
+                   ".off.");
+    command->add_option("input", args->input, "mesh to restore")->required();
+    command->add_option("-o,--output", args->output, "restored mesh")->required();
+    command->add_option("--report", args->report, "write every count and stage time as JSON");
+    command->add_option("--segments", args->segments,
+                        "write the input as PLY with vertex colours (red: edge vertices) and face "
+                        "colours (one per feature patch; yellow: edge triangles; magenta: corner "
+                        "triangles)");
+    command->add_flag("--ascii", args->ascii, "write STL and PLY as text instead of binary");
+    command->add_flag("-q,--quiet", args->quiet, "print no summary");
+    bind_options(*command, args->options);
+    command->callback([args] { run_restore(*args); });
+}
+
+}  // namespace resharp::cli
