@@ -19,10 +19,10 @@ struct Rgb {
 /// Optional values written with a mesh, each either empty or one per element. Views only: the
 /// caller keeps the data alive for the call. Only PLY stores them.
 struct MeshAttributes {
-    std::span<const Vec3> vertex_normals;           ///< #V, written as `double nx, ny, nz`
-    std::span<const std::int32_t> vertex_surfaces;  ///< #V, written as `int surface`
-    std::span<const Rgb> vertex_colors;             ///< #V, written as `uchar red, green, blue`
-    std::span<const Rgb> face_colors;               ///< #F, written as `uchar red, green, blue`
+    std::span<const Vec3> vertex_normals = {};           ///< #V, written as `double nx, ny, nz`
+    std::span<const std::int32_t> vertex_surfaces = {};  ///< #V, written as `int surface`
+    std::span<const Rgb> vertex_colors = {};  ///< #V, written as `uchar red, green, blue`
+    std::span<const Rgb> face_colors = {};    ///< #F, written as `uchar red, green, blue`
 
     bool empty() const {
         return vertex_normals.empty() && vertex_surfaces.empty() && vertex_colors.empty() &&

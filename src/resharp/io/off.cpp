@@ -1,5 +1,7 @@
 #include "resharp/io/off.h"
 
+#include <algorithm>
+
 #include "resharp/core/errors.h"
 #include "resharp/io/detail/file_bytes.h"
 #include "resharp/io/detail/mesh_checks.h"
@@ -10,10 +12,11 @@
 namespace resharp::io {
 namespace {
 
-constexpr int kMaxExtraVertexValues = 7;      // CNOFF: nx ny nz r g b a
-constexpr int kMaxFaceColourValues = 4;       // r g b a
-constexpr std::uint64_t kMinVertexBytes = 6;  // "0 0 0\n"
-constexpr std::uint64_t kMinFaceBytes = 8;    // "3 0 1 2\n"
+constexpr int kMaxExtraVertexValues = 7;  // CNOFF: nx ny nz r g b a
+constexpr int kMaxFaceColourValues = 4;   // r g b a
+// Every vertex and face line holds at least one token and a separator. A tighter bound would
+// report a malformed line as a bad count.
+constexpr std::uint64_t kMinRecordBytes = 2;
 
 class OffReader {
 public:
@@ -47,14 +50,15 @@ private:
         const std::uint64_t left = bytes_.size() - cursor_.offset();
         const auto vertices = static_cast<std::uint64_t>(vertex_count_);
         const auto faces = static_cast<std::uint64_t>(face_count_);
-        if (!detail::fits(vertices, kMinVertexBytes, left) ||
-            !detail::fits(faces, kMinFaceBytes, left - vertices * kMinVertexBytes)) {
+        if (!detail::fits(vertices + faces, kMinRecordBytes, left + 1)) {
             cursor_.fail("header promises " + std::to_string(vertex_count_) + " vertices and " +
                          std::to_string(face_count_) + " faces, more than the " +
                          std::to_string(left) + " bytes left can hold");
         }
-        soup_.points.reserve(vertices);
-        soup_.triangles.reserve(faces);
+        // Reserve no more than well-formed lines could fill ("0 0 0\n", "3 0 1 2\n"), so a
+        // lying count costs at most a few times the file size.
+        soup_.points.reserve(std::min(vertices, left / 6));
+        soup_.triangles.reserve(std::min(faces, left / 8));
     }
 
     // The first token of the next line that has one.

@@ -173,10 +173,12 @@ void write_binary(detail::OutputBuffer& out, const Mesh& mesh) {
     }
 }
 
-void write_floats(detail::OutputBuffer& out, const Vec3& p) {
+// Doubles in their shortest exact form: ASCII STL then round-trips exactly through resharp,
+// and readers that parse floats get the nearest float, as from a binary file.
+void write_numbers(detail::OutputBuffer& out, const Vec3& p) {
     for (Eigen::Index i = 0; i < 3; ++i) {
         out.text(' ');
-        out.number(static_cast<float>(p[i]));
+        out.number(p[i]);
     }
     out.text('\n');
 }
@@ -185,11 +187,11 @@ void write_ascii(detail::OutputBuffer& out, const Mesh& mesh) {
     out.text("solid resharp\n");
     for (const Triangle& t : mesh.triangles) {
         out.text("  facet normal");
-        write_floats(out, unit_normal(mesh, t));
+        write_numbers(out, unit_normal(mesh, t));
         out.text("    outer loop\n");
         for (const Index v : t) {
             out.text("      vertex");
-            write_floats(out, mesh.positions[v]);
+            write_numbers(out, mesh.positions[v]);
         }
         out.text("    endloop\n  endfacet\n");
     }

@@ -28,8 +28,9 @@ TriangleSoup read_stl(std::string_view bytes, const std::string& name);
 TriangleSoup read_stl(std::istream& in, const std::string& name);
 
 /// Writes `mesh` as STL in `encoding`: one facet per triangle with its unit normal (zero for a
-/// degenerate triangle), coordinates rounded to float as the format requires. Byte-deterministic;
-/// the binary header does not start with "solid". Check `out`'s state afterwards.
+/// degenerate triangle). Binary rounds coordinates to float as the format requires; ASCII writes
+/// the shortest decimal form of each double, which reads back exactly. Byte-deterministic; the
+/// binary header does not start with "solid". Check `out`'s state afterwards.
 /// \throws InvalidInput if `mesh` has no triangles, an index out of range, or a coordinate that
 /// is NaN, infinite or beyond float range.
 void write_stl(std::ostream& out, const Mesh& mesh, Encoding encoding);

@@ -11,7 +11,13 @@ namespace resharp::io::detail {
 
 std::string read_file_bytes(const std::filesystem::path& path) {
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw ReadError(path.string(), "is a directory");
+    const auto status = std::filesystem::status(path, ec);
+    if (status.type() == std::filesystem::file_type::not_found) {
+        throw ReadError(path.string(), "no such file");
+    }
+    if (status.type() == std::filesystem::file_type::directory) {
+        throw ReadError(path.string(), "is a directory, not a mesh file");
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) throw ReadError(path.string(), std::string("cannot open: ") + std::strerror(errno));
     const auto size = std::filesystem::file_size(path, ec);
