@@ -35,12 +35,19 @@ Box3 polytope_bounds(const std::vector<HalfSpace>& faces) {
     return box;
 }
 
-/// The stretch of a line with coordinate `d` (distance from the axis, across it) inside a circle
-/// of radius r centred at `center` along the line: empty when it misses or only touches.
-bool chord(double center, double d, double r, double& t0, double& t1) {
-    const double half_squared = r * r - d * d;
-    if (!(half_squared > 0.0)) return false;
-    const double half = std::sqrt(half_squared);
+/// The stretch of a line inside a circle or ball of radius r whose centre lies `across` from it
+/// (a vector perpendicular to the line) and at `center` along it. A touching line gets a tiny
+/// chord when the touching point counts as inside (kTouchingChord).
+bool chord(double center, const Vec3& across, double r, double& t0, double& t1) {
+    const double half_squared = r * r - across.squaredNorm();
+    double half = 0.0;
+    if (half_squared == 0.0 && boundary_is_inside(Vec3(across / r))) {
+        half = kTouchingChord * r;
+    } else if (half_squared > 0.0) {
+        half = std::sqrt(half_squared);
+    } else {
+        return false;
+    }
     t0 = center - half;
     t1 = center + half;
     return true;
@@ -132,7 +139,7 @@ void ZCylinder::intersect(const Ray& ray, std::vector<Interval>& out) const {
     const int across = 1 - ray.axis;  // x-rays vary in x and sit at fixed y, and vice versa
     const double d = ray.origin[across] - p_.center[across];
     double t0, t1;
-    if (!chord(p_.center[ray.axis], d, p_.radius, t0, t1)) return;
+    if (!chord(p_.center[ray.axis], d * Vec3::Unit(across), p_.radius, t0, t1)) return;
     const auto radial = [&](double t) {
         Vec3 n = Vec3::Zero();
         n[ray.axis] = (t - p_.center[ray.axis]) / p_.radius;
@@ -155,7 +162,7 @@ void Sphere::intersect(const Ray& ray, std::vector<Interval>& out) const {
     Vec3 offset = ray.origin - center_;
     offset[ray.axis] = 0.0;
     double t0, t1;
-    if (!chord(center_[ray.axis], offset.norm(), radius_, t0, t1)) return;
+    if (!chord(center_[ray.axis], offset, radius_, t0, t1)) return;
     const auto normal = [&](double t) { return Vec3((ray.point(t) - center_) / radius_); };
     out.push_back({{t0, normal(t0), surface_}, {t1, normal(t1), surface_}});
 }

@@ -62,6 +62,13 @@ inline bool boundary_is_inside(const Vec3& n) {
     return n.z() < 0.0;
 }
 
+/// Half-length, relative to the radius, of the chord a ray gets where it only touches a round
+/// surface at a point that counts as inside by boundary_is_inside(). The perturbed ray would cut
+/// a chord of length ~sqrt(ε) around the touching point, holding any node there; this keeps such
+/// a node in agreement with the other rays through it. The chord's ends lie within
+/// (kTouchingChord² / 2) * radius of the surface.
+inline constexpr double kTouchingChord = 1e-9;
+
 /// True when crossing c lies before the node at parameter node_t on a ray along `axis`, under the
 /// perturbation of boundary_is_inside(): strictly before, or at the node and ordered before it.
 inline bool crossing_precedes(const Crossing& c, double node_t, int axis) {
