@@ -3,7 +3,8 @@
 add_library(resharp_warnings INTERFACE)
 add_library(resharp::warnings ALIAS resharp_warnings)
 target_compile_options(resharp_warnings INTERFACE
-    $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion>)
+    $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion
+        -Wno-missing-field-initializers>)  # designated initializers leave defaults on purpose
 
 add_library(resharp_sanitizers INTERFACE)
 add_library(resharp::sanitizers ALIAS resharp_sanitizers)

@@ -108,8 +108,8 @@ public:
         Mesh output;
         timed(Stage::Split, [&] {
             SplitReport split;
-            output = split_band_triangles(mesh_, connectivity, face_normals, normals, points, split,
-                                          result_.source_face);
+            output = split_band_triangles(mesh_, connectivity, face_normals, normals,
+                                          vertex_normals, points, split, result_.source_face);
             record(split, points);
         });
         return output;

@@ -9,11 +9,12 @@
 
 namespace resharp {
 
-/// Per vertex (#V): at each vertex of a crossing edge, N = sum(theta_i N_i) / sum(theta_i) over
+/// Per vertex (#V): at each vertex of an edge or corner triangle, N = sum(theta_i N_i) / sum(theta_i) over
 /// the incident faces of the vertex's own feature patch (eq. 5.1), normalised; theta_i is the
 /// face's angle at the vertex. Faces whose three vertices all lie on that patch are preferred:
 /// a face that only leans into the patch from a band would tilt N towards the neighbouring
-/// feature. Zero at vertices off the bands and where the patch has no incident face.
+/// feature. A vertex all of whose faces lie in bands takes the mean of its same-patch neighbours'
+/// normals. Zero at vertices off the bands, without a patch, or where nothing can tell.
 std::vector<Vec3> feature_normals(const Mesh& mesh, const Connectivity& connectivity,
                                   const std::vector<Vec3>& face_normals,
                                   const std::vector<Index>& face_patch,

@@ -67,8 +67,13 @@ void emit_pieces(const Mesh& mesh, const SharpPoints& p, const SplitVertices& id
                  Emit&& emit) {
     const FacePolygon polygon = boundary_of(mesh, p, ids, f);
     if (p.corner_point[f] != kNoIndex) {
+        // An edge split at the corner point itself (see repair_face) leaves its two pieces empty.
         const Index centre = ids.of_point(p.corner_point[f]);
-        for (int i = 0; i < polygon.size; ++i) emit(polygon.at(i), polygon.at(i + 1), centre);
+        for (int i = 0; i < polygon.size; ++i) {
+            if (polygon.at(i) != centre && polygon.at(i + 1) != centre) {
+                emit(polygon.at(i), polygon.at(i + 1), centre);
+            }
+        }
         return;
     }
     FacePolygon rest;
@@ -104,8 +109,22 @@ void emit_pieces(const Mesh& mesh, const SharpPoints& p, const SplitVertices& id
 /// grid mesh, far above rounding noise.
 constexpr double kCollapsedAreaRatio = 1e-12;
 
+/// The normal a piece at an input vertex must agree with: the vertex's feature normal, or its
+/// plain vertex normal where it has none (a vertex whose faces all lie in bands).
+struct ReferenceNormals {
+    const std::vector<Vec3>& feature;
+    const std::vector<Vec3>& vertex;
+    const Vec3& at(Index v) const { return feature[v].isZero(0.0) ? vertex[v] : feature[v]; }
+};
+
+/// A piece is sound when it has area and turns the way of the surface it lies on: the reference
+/// normal of each of its input vertices, or, for a piece of new points only, the face it was
+/// cut from. (The
+/// face's own normal is no guide where a feature normal is known: along a chamfer that does not
+/// follow the grid, a band face can lean almost onto one feature, 90 degrees or more from
+/// pieces that rightly lie on the other.)
 bool pieces_are_sound(const Mesh& mesh, const std::vector<Vec3>& face_normals,
-                      const std::vector<Vec3>& feature_normals, const SharpPoints& p,
+                      const ReferenceNormals& reference, const SharpPoints& p,
                       const SplitVertices& ids, Index f) {
     const Triangle& t = mesh.triangles[f];
     double scale = 0.0;
@@ -115,25 +134,86 @@ bool pieces_are_sound(const Mesh& mesh, const std::vector<Vec3>& face_normals,
     bool sound = true;
     emit_pieces(mesh, p, ids, f, [&](Index a, Index b, Index c) {
         const Vec3 n = (ids.position(b) - ids.position(a)).cross(ids.position(c) - ids.position(a));
-        if (n.norm() <= kCollapsedAreaRatio * scale || n.dot(face_normals[f]) <= 0.0) sound = false;
+        if (n.norm() <= kCollapsedAreaRatio * scale) sound = false;
+        bool has_reference = false;
         for (Index v : {a, b, c}) {
-            if (ids.is_original(v) && n.dot(feature_normals[v]) < 0.0) sound = false;
+            if (!ids.is_original(v) || reference.at(v).isZero(0.0)) continue;
+            has_reference = true;
+            if (n.dot(reference.at(v)) <= 0.0) sound = false;
         }
+        if (!has_reference && n.dot(face_normals[f]) <= 0.0) sound = false;
     });
     return sound;
 }
 
-std::size_t drop_points_of(const Connectivity& c, SharpPoints& p, Index f) {
-    std::size_t dropped = 0;
+/// The slots of face f that may hold a point: its three half-edges and its corner.
+struct PointSlots {
+    std::array<Index*, 4> slot{};
+    std::array<Index*, 4> twin_slot{};  ///< the same edge point seen from the other face
+};
+
+PointSlots slots_of(const Connectivity& c, SharpPoints& p, Index f) {
+    PointSlots s;
     for (Index k = 0; k < 3; ++k) {
         const Index h = 3 * f + k;
-        if (p.edge_point[h] == kNoIndex) continue;
-        p.edge_point[h] = kNoIndex;
-        if (c.twin[h] != kNoIndex) p.edge_point[c.twin[h]] = kNoIndex;
-        ++dropped;
+        s.slot[k] = &p.edge_point[h];
+        s.twin_slot[k] = c.twin[h] != kNoIndex ? &p.edge_point[c.twin[h]] : nullptr;
     }
-    if (p.corner_point[f] != kNoIndex) {
-        p.corner_point[f] = kNoIndex;
+    s.slot[3] = &p.corner_point[f];
+    return s;
+}
+
+void clear_slot(const PointSlots& s, int i) {
+    *s.slot[i] = kNoIndex;
+    if (s.twin_slot[i] != nullptr) *s.twin_slot[i] = kNoIndex;
+}
+
+/// Tries `replacement` in slot i of face f; keeps it (on both faces of the edge) if the face
+/// then splits soundly.
+bool try_slot(const Mesh& mesh, const std::vector<Vec3>& face_normals,
+              const ReferenceNormals& reference, SharpPoints& p, const SplitVertices& ids,
+              Index f, const PointSlots& s, int i, Index replacement) {
+    const Index kept = *s.slot[i];
+    *s.slot[i] = replacement;
+    const bool sound = pieces_are_sound(mesh, face_normals, reference, p, ids, f);
+    *s.slot[i] = kept;
+    if (!sound) return false;
+    *s.slot[i] = replacement;
+    if (s.twin_slot[i] != nullptr) *s.twin_slot[i] = replacement;
+    return true;
+}
+
+/// Makes face f split soundly by changing as little as possible, in this order:
+/// - drop a single point (the first that is enough, in slot order): two close points out of
+///   order along the sharp edge make a flipped sliver, and the one kept still restores the edge;
+/// - in a corner triangle, split one edge at the corner point instead of its own point: where a
+///   sharp edge ends at a corner, eq. 5.2 can put the point beyond the corner on the edge's
+///   extension, and the corner is where that edge really stops;
+/// - drop every point of the face.
+/// Returns the number of points dropped.
+std::size_t repair_face(const Mesh& mesh, const Connectivity& c,
+                        const std::vector<Vec3>& face_normals,
+                        const ReferenceNormals& reference, SharpPoints& p,
+                        const SplitVertices& ids, Index f) {
+    const PointSlots s = slots_of(c, p, f);
+    for (int i = 0; i < 4; ++i) {
+        if (*s.slot[i] != kNoIndex &&
+            try_slot(mesh, face_normals, reference, p, ids, f, s, i, kNoIndex)) {
+            return 1;
+        }
+    }
+    const Index corner = p.corner_point[f];
+    const bool has_snapped_edge = *s.slot[0] == corner || *s.slot[1] == corner || *s.slot[2] == corner;
+    for (int i = 0; i < 3 && corner != kNoIndex && !has_snapped_edge; ++i) {
+        if (*s.slot[i] != kNoIndex &&
+            try_slot(mesh, face_normals, reference, p, ids, f, s, i, corner)) {
+            return 1;
+        }
+    }
+    std::size_t dropped = 0;
+    for (int i = 0; i < 4; ++i) {
+        if (*s.slot[i] == kNoIndex) continue;
+        clear_slot(s, i);
         ++dropped;
     }
     return dropped;
@@ -142,7 +222,7 @@ std::size_t drop_points_of(const Connectivity& c, SharpPoints& p, Index f) {
 /// Drops points until every face with points splits soundly. Only drops, so it ends.
 std::size_t drop_unsound_points(const Mesh& mesh, const Connectivity& c,
                                 const std::vector<Vec3>& face_normals,
-                                const std::vector<Vec3>& feature_normals, SharpPoints& p,
+                                const ReferenceNormals& reference, SharpPoints& p,
                                 const SplitVertices& ids) {
     std::vector<Index> candidates;
     for (Index f = 0; f < mesh.face_count(); ++f) {
@@ -154,8 +234,8 @@ std::size_t drop_unsound_points(const Mesh& mesh, const Connectivity& c,
         changed = false;
         for (Index f : candidates) {
             if (has_points(p, f) &&
-                !pieces_are_sound(mesh, face_normals, feature_normals, p, ids, f)) {
-                dropped += drop_points_of(c, p, f);
+                !pieces_are_sound(mesh, face_normals, reference, p, ids, f)) {
+                dropped += repair_face(mesh, c, face_normals, reference, p, ids, f);
                 changed = true;
             }
         }
@@ -179,11 +259,13 @@ std::vector<Index> number_surviving_points(const SharpPoints& p, Index first) {
 
 Mesh split_band_triangles(const Mesh& mesh, const Connectivity& connectivity,
                           const std::vector<Vec3>& face_normals,
-                          const std::vector<Vec3>& feature_normals, SharpPoints& points,
+                          const std::vector<Vec3>& feature_normals,
+                          const std::vector<Vec3>& vertex_normals, SharpPoints& points,
                           SplitReport& report, std::vector<Index>& source_face) {
     const SplitVertices ids(mesh, points);
+    const ReferenceNormals reference{feature_normals, vertex_normals};
     report.refused_by_quality =
-        drop_unsound_points(mesh, connectivity, face_normals, feature_normals, points, ids);
+        drop_unsound_points(mesh, connectivity, face_normals, reference, points, ids);
 
     const Index original_count = static_cast<Index>(mesh.vertex_count());
     const std::vector<Index> number = number_surviving_points(points, original_count);

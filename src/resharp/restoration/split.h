@@ -19,16 +19,17 @@ struct SplitReport {
     std::size_t output_faces = 0;
 };
 
-/// Takes the mesh, its connectivity, unit face normals (#F), feature normals (#V) and the points
-/// of place_sharp_points. First drops, repeatedly, every point of a face whose pieces would
-/// collapse or turn against the face or against a feature normal, so that no output triangle is
-/// flipped; dropped points are removed from `points` (set to kNoIndex). Then builds the output:
+/// Takes the mesh, its connectivity, unit face normals (#F), feature normals (#V), plain vertex
+/// normals (#V, used where a vertex has no feature normal) and the points of
+/// place_sharp_points. First drops, repeatedly, points of faces whose pieces would collapse or
+/// turn against the surface they lie on, so that no output triangle is flipped; dropped points are removed from `points` (set to kNoIndex). Then builds the output:
 /// the input vertices first, unchanged and in order, then the surviving points in `points`
 /// order; each face in input order, either unchanged or replaced by its pieces.
 /// `source_face` receives, per output face, the input face it came from.
 Mesh split_band_triangles(const Mesh& mesh, const Connectivity& connectivity,
                           const std::vector<Vec3>& face_normals,
-                          const std::vector<Vec3>& feature_normals, SharpPoints& points,
+                          const std::vector<Vec3>& feature_normals,
+                          const std::vector<Vec3>& vertex_normals, SharpPoints& points,
                           SplitReport& report, std::vector<Index>& source_face);
 
 }  // namespace resharp

@@ -1,6 +1,7 @@
 #include "resharp/segmentation/edge_segmentation.h"
 
 #include <algorithm>
+#include <cmath>
 #include <deque>
 #include <string>
 
@@ -48,7 +49,11 @@ std::vector<std::uint8_t> cluster_edge_vertices(const PrincipalCurvatures& k,
                                                 const EdgeSegmentationOptions& o,
                                                 int& iterations) {
     std::vector<Eigen::Vector2d> points(k.k1.size());
-    for (std::size_t v = 0; v < points.size(); ++v) points[v] = {k.k1[v], k.k2[v]};
+    for (std::size_t v = 0; v < points.size(); ++v) {
+        const double a = std::abs(k.k1[v]), b = std::abs(k.k2[v]);
+        points[v] = o.feature == CurvatureFeature::Signed ? Eigen::Vector2d(k.k1[v], k.k2[v])
+                                                          : Eigen::Vector2d(std::min(a, b), std::max(a, b));
+    }
     std::vector<std::uint8_t> is_edge(points.size(), 0);
     if (points.empty()) return is_edge;
     const TwoMeansResult r =

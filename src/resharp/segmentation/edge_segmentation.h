@@ -13,7 +13,18 @@
 
 namespace resharp {
 
+/// What k-means clusters per vertex.
+enum class CurvatureFeature {
+    /// (k1, k2) as the paper does (eq. 3.1). Convex edges sit at (0, +k) and concave ones at
+    /// (-k, 0), so a single edge centre pulled towards the commoner kind can miss the other.
+    Signed,
+    /// (min(|k1|, |k2|), max(|k1|, |k2|)): convex and concave edges fall together.
+    Magnitude,
+};
+
 struct EdgeSegmentationOptions {
+    /// The clustered quantity; Signed is the paper's variant.
+    CurvatureFeature feature = CurvatureFeature::Magnitude;
     /// eps_K, eq. 3.2: k-means stops when both centres move less than this (1/length).
     double kmeans_tolerance = 1e-5;
     /// Safety bound on k-means iterations; the paper's criterion normally stops far earlier.

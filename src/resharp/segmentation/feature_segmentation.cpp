@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <tuple>
 
@@ -106,35 +107,69 @@ std::vector<PatchRole> assign_roles(const PatchCensus& census,
     return role;
 }
 
-/// §4: a tiny patch joins the feature patch it shares most edges with; one that touches no
-/// feature patch lies inside an edge region and becomes band. Repeated so that a cluster of
-/// tiny patches drains into its feature neighbour from the outside in.
-std::size_t absorb_tiny(const Connectivity& c, std::vector<Index>& region,
+/// How a tiny patch touches one feature patch: shared edges and the summed angle between the
+/// face normals across them.
+struct Contact {
+    Index patch = kNoIndex;
+    std::size_t edges = 0;
+    double angle_sum_deg = 0.0;
+};
+
+/// For every tiny patch, its contacts with feature patches.
+std::vector<std::vector<Contact>> tiny_contacts(const Connectivity& c,
+                                                const std::vector<Vec3>& normals,
+                                                const std::vector<Index>& region,
+                                                const std::vector<PatchRole>& role) {
+    std::vector<std::vector<Contact>> contacts(role.size());
+    for (std::size_t h = 0; h < c.twin.size(); ++h) {
+        const Index twin = c.twin[h];
+        if (twin == kNoIndex) continue;
+        const Index f = face_of(static_cast<Index>(h));
+        const Index mine = region[f];
+        const Index theirs = region[face_of(twin)];
+        if (role[mine] != PatchRole::Tiny || role[theirs] != PatchRole::Feature) continue;
+        auto& list = contacts[mine];
+        auto it = std::find_if(list.begin(), list.end(), [&](auto& e) { return e.patch == theirs; });
+        if (it == list.end()) it = list.insert(list.end(), Contact{theirs});
+        ++it->edges;
+        it->angle_sum_deg += angle_deg(normals[f], normals[face_of(twin)]);
+    }
+    return contacts;
+}
+
+/// The contact a tiny patch joins: the one with most shared edges among those whose normals
+/// agree across the border on average (same surface); kNoIndex if none does.
+Index absorbing_patch(const std::vector<Contact>& contacts, double max_angle_deg) {
+    Index best = kNoIndex;
+    std::size_t best_edges = 0;
+    for (const Contact& contact : contacts) {
+        const double mean = contact.angle_sum_deg / static_cast<double>(contact.edges);
+        const bool better = contact.edges > best_edges ||
+                            (contact.edges == best_edges && contact.patch < best);
+        if (mean < max_angle_deg && better) {
+            best = contact.patch;
+            best_edges = contact.edges;
+        }
+    }
+    return best;
+}
+
+/// §4: a tiny patch moves into the neighbouring feature patch of the same surface (the one it
+/// shares most edges with among those whose normals agree across the border); a tiny patch with
+/// no such neighbour lies within an edge region and becomes band. Without the agreement test a
+/// tiny piece of a curved wall would join the flat face above it through a corner of the band,
+/// and merging would then pour the whole wall into that face. Repeated so that clusters of tiny
+/// patches drain into their feature neighbour from the outside in.
+std::size_t absorb_tiny(const Connectivity& c, const std::vector<Vec3>& normals,
+                        double max_angle_deg, std::vector<Index>& region,
                         std::vector<PatchRole>& role) {
     std::size_t absorbed = 0;
-    std::vector<std::pair<Index, std::size_t>> shared;  // (feature patch, shared edges)
     bool changed = true;
     while (changed) {
         changed = false;
-        std::vector<std::vector<std::pair<Index, std::size_t>>> votes(role.size());
-        for (std::size_t h = 0; h < c.twin.size(); ++h) {
-            const Index twin = c.twin[h];
-            if (twin == kNoIndex) continue;
-            const Index mine = region[face_of(static_cast<Index>(h))];
-            const Index theirs = region[face_of(twin)];
-            if (role[mine] != PatchRole::Tiny || role[theirs] != PatchRole::Feature) continue;
-            auto& v = votes[mine];
-            auto it = std::find_if(v.begin(), v.end(), [&](auto& e) { return e.first == theirs; });
-            if (it == v.end()) v.emplace_back(theirs, 1);
-            else ++it->second;
-        }
+        const auto contacts = tiny_contacts(c, normals, region, role);
         std::vector<Index> target(role.size(), kNoIndex);
-        for (Index p = 0; p < role.size(); ++p) {
-            if (votes[p].empty()) continue;
-            target[p] = std::max_element(votes[p].begin(), votes[p].end(), [](auto& a, auto& b) {
-                            return a.second < b.second || (a.second == b.second && a.first > b.first);
-                        })->first;
-        }
+        for (Index p = 0; p < role.size(); ++p) target[p] = absorbing_patch(contacts[p], max_angle_deg);
         for (Index& r : region) {
             if (target[r] != kNoIndex) r = target[r];
         }
@@ -242,6 +277,85 @@ std::vector<Index> label_vertices(const Mesh& mesh, const Connectivity& c,
     return label;
 }
 
+/// Angle-weighted normal at q of its ring faces in patch p that do not touch vertex `away`.
+Vec3 patch_normal_away_from(const Mesh& mesh, const Connectivity& c,
+                            const std::vector<Vec3>& normals, const std::vector<Index>& face_patch,
+                            Index q, Index p, Index away) {
+    Vec3 sum = Vec3::Zero();
+    for (Index f : c.faces_around(q)) {
+        const Triangle& t = mesh.triangles[f];
+        if (face_patch[f] != p || t[0] == away || t[1] == away || t[2] == away) continue;
+        sum += corner_angle(mesh, f, corner_of(t, q)) * normals[f];
+    }
+    const double length = sum.norm();
+    return length > 0.0 ? Vec3(sum / length) : Vec3::Zero();
+}
+
+/// How far v rises out of the tangent plane of patch p at its neighbours labelled p: the
+/// smallest sine of the elevation of v seen from such a neighbour; infinity if none can tell.
+double elevation_from_patch(const Mesh& mesh, const Connectivity& c,
+                            const std::vector<Vec3>& normals, const std::vector<Index>& face_patch,
+                            const std::vector<Index>& label, Index v, Index p) {
+    double best = std::numeric_limits<double>::infinity();
+    for_each_ring_vertex(mesh, c, v, [&](Index q) {
+        if (label[q] != p) return;
+        const Vec3 n = patch_normal_away_from(mesh, c, normals, face_patch, q, p, v);
+        const Vec3 d = mesh.positions[v] - mesh.positions[q];
+        if (n.isZero(0.0) || d.isZero(0.0)) return;
+        best = std::min(best, std::abs(n.dot(d)) / d.norm());
+    });
+    return best;
+}
+
+/// Below this sine of elevation a vertex lies on a patch's tangent planes: 0.2 is about 11.5
+/// degrees, far above what the curvature of a machined surface gives between grid neighbours
+/// (h / 2r) and far below the dihedral angle of an edge worth restoring.
+constexpr double kOnPlaneSine = 0.2;
+
+/// The patches a vertex could lie on: those of its faces and those of its labelled neighbours.
+void candidate_patches(const Mesh& mesh, const Connectivity& c,
+                       const std::vector<Index>& face_patch, const std::vector<Index>& label,
+                       Index v, std::vector<Index>& out) {
+    ring_patches(c, face_patch, v, out);
+    for_each_ring_vertex(mesh, c, v, [&](Index q) {
+        if (label[q] != kNoIndex && std::find(out.begin(), out.end(), label[q]) == out.end()) {
+            out.push_back(label[q]);
+        }
+    });
+    std::sort(out.begin(), out.end());
+}
+
+/// Corrects the majority vote at vertices on the border of two or more patches, and labels
+/// vertices all of whose faces lie in bands. Along a chamfer that does not follow the grid, band
+/// faces nearly parallel to one feature grow into it, and a vertex of the other feature can
+/// then count more faces of the wrong patch. Every vertex lies exactly on its surface, so the
+/// patch whose tangent planes, seen from its neighbours, pass through the vertex is the right
+/// one.
+std::vector<Index> refine_border_labels(const Mesh& mesh, const Connectivity& c,
+                                        const std::vector<Vec3>& normals,
+                                        const std::vector<Index>& face_patch,
+                                        const std::vector<Index>& label) {
+    std::vector<Index> refined = label;
+    std::vector<Index> candidates;
+    for (Index v = 0; v < mesh.vertex_count(); ++v) {
+        candidate_patches(mesh, c, face_patch, label, v, candidates);
+        if (candidates.size() < 2 && label[v] != kNoIndex) continue;
+        double best = std::numeric_limits<double>::infinity();
+        Index best_patch = label[v];
+        for (Index p : candidates) {
+            const double e = elevation_from_patch(mesh, c, normals, face_patch, label, v, p);
+            if (e < best || (e == best && p == label[v])) {
+                best = e;
+                best_patch = p;
+            }
+        }
+        const bool decided = label[v] != kNoIndex ? best < std::numeric_limits<double>::infinity()
+                                                  : best < kOnPlaneSine;
+        if (decided) refined[v] = best_patch;
+    }
+    return refined;
+}
+
 }  // namespace
 
 FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& connectivity,
@@ -256,7 +370,8 @@ FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& conne
         take_census(mesh, connectivity, region, s.grown_patches, is_edge_vertex);
     std::vector<PatchRole> role = assign_roles(census, options);
     s.band_patches = static_cast<std::size_t>(std::count(role.begin(), role.end(), PatchRole::Band));
-    s.tiny_absorbed = absorb_tiny(connectivity, region, role);
+    s.tiny_absorbed =
+        absorb_tiny(connectivity, face_normals, options.merge_angle_deg, region, role);
 
     for (Index& r : region) {
         if (role[r] == PatchRole::Band) r = kNoIndex;
@@ -265,7 +380,8 @@ FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& conne
                              s.grown_patches);
     s.patch_count = compact_ids(region, s.grown_patches);
     s.face_patch = std::move(region);
-    s.vertex_patch = label_vertices(mesh, connectivity, s.face_patch);
+    s.vertex_patch = refine_border_labels(mesh, connectivity, face_normals, s.face_patch,
+                                          label_vertices(mesh, connectivity, s.face_patch));
     return s;
 }
 

@@ -1,0 +1,51 @@
+#pragma once
+/// Ground truth from the simulator's oracle (design.md §5): where the sharp edges and corners
+/// are, and how many of them a restored mesh put back.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "resharp/mesh/mesh.h"
+
+namespace resharp::eval {
+
+/// The exact data the simulator writes beside its mesh, one entry per vertex.
+struct Oracle {
+    std::vector<Vec3> normals;             ///< #V exact unit surface normals
+    std::vector<std::int32_t> surfaces;    ///< #V id of the surface each vertex lies on
+};
+
+/// Where an ideal sharp point comes from.
+enum class IdealKind : std::uint8_t {
+    Edge,    ///< a crossing edge: eq. 5.2 with the exact normals of its two vertices
+    Corner,  ///< a corner triangle: eq. 5.3 with the exact normals of its three vertices
+};
+
+struct IdealPoint {
+    Vec3 position = Vec3::Zero();
+    IdealKind kind = IdealKind::Edge;
+    Index face = kNoIndex;          ///< a face holding the crossing edge, or the corner triangle
+    Index vertices[3] = {kNoIndex, kNoIndex, kNoIndex};  ///< edge: two, corner: three
+    bool on_boundary = false;  ///< a crossing edge with one face: left alone by restoration
+};
+
+struct IdealPointOptions {
+    /// theta_s: two vertices meet at a sharp junction when they lie on different surfaces and
+    /// their exact normals differ by more than this (degrees).
+    double sharp_angle_deg = 30.0;
+};
+
+/// Every crossing edge (a mesh edge at a sharp junction) and every corner triangle (three
+/// vertices on three surfaces, pairwise at sharp junctions) of `mesh`, with its ideal point.
+/// Edges come in order of their lowest half-edge, then corners in face order. Junctions whose
+/// equations have no single solution (parallel normals) are left out.
+std::vector<IdealPoint> find_ideal_points(const Mesh& mesh, const Oracle& oracle,
+                                          const IdealPointOptions& options = {});
+
+/// For each ideal point, the distance to the nearest of `candidates` (infinity if none within
+/// `search_radius`). A uniform grid with cells of search_radius keeps it linear in size.
+std::vector<double> nearest_distances(std::span<const IdealPoint> ideal,
+                                      std::span<const Vec3> candidates, double search_radius);
+
+}  // namespace resharp::eval
