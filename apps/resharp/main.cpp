@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
     app.footer(kExitCodeHelp);
     app.require_subcommand(1);
     add_restore_command(app);
+    add_simulate_command(app);
 
     try {
         app.parse(argc, argv);

@@ -1,0 +1,150 @@
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "commands.h"
+#include "resharp/core/stage_timer.h"
+#include "resharp/io/mesh_io.h"
+#include "resharp/sim/job.h"
+#include "resharp/sim/marching_cubes.h"
+#include "resharp/sim/simulate.h"
+
+namespace resharp::cli {
+namespace {
+
+struct SimulateArguments {
+    std::string job;
+    std::string output;
+    std::string oracle;
+    double pitch = 0.0;  // 0: the job's
+    bool ascii = false;
+    bool quiet = false;
+    sim::SimulationOptions options;
+};
+
+/// A progress bar on stderr that appears only once a run has taken a second, so short runs
+/// stay silent, and redraws at most ten times a second.
+class ProgressBar {
+public:
+    explicit ProgressBar(bool enabled) : enabled_(enabled) {}
+    ~ProgressBar() { finish(); }
+
+    void update(double fraction) {
+        if (!enabled_) return;
+        const auto now = std::chrono::steady_clock::now();
+        if (now - start_ < std::chrono::seconds(1) || now - last_draw_ < std::chrono::milliseconds(100)) {
+            return;
+        }
+        last_draw_ = now;
+        constexpr int kWidth = 40;
+        const int filled = static_cast<int>(fraction * kWidth + 0.5);
+        std::fprintf(stderr, "\rsimulating [%s%s] %3d%%", std::string(filled, '#').c_str(),
+                     std::string(kWidth - filled, ' ').c_str(), static_cast<int>(fraction * 100));
+        std::fflush(stderr);
+        shown_ = true;
+    }
+
+    void finish() {
+        if (shown_) std::fprintf(stderr, "\r%60s\r", "");
+        shown_ = false;
+    }
+
+private:
+    bool enabled_;
+    bool shown_ = false;
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+    std::chrono::steady_clock::time_point last_draw_{};
+};
+
+double seconds(std::chrono::nanoseconds t) { return std::chrono::duration<double>(t).count(); }
+
+std::string default_output(const sim::Job& job) {
+    return std::filesystem::path(job.program).replace_extension(".stl").string();
+}
+
+void run_simulate(const SimulateArguments& args) {
+    sim::Job job = sim::read_job(args.job);
+    sim::SimulationOptions options = args.options;
+    options.pitch = args.pitch > 0.0 ? args.pitch : job.pitch;
+    const sim::ToolPath path = sim::read_gcode(job.program, {.start_position = job.start_position});
+
+    const StageTimer simulation_timer;
+    sim::Simulation simulation;
+    {
+        ProgressBar bar(!args.quiet);
+        simulation = sim::simulate(job.stock, job.tools, path, options,
+                                   [&](double fraction) { bar.update(fraction); });
+    }
+    const auto simulation_time = simulation_timer.elapsed();
+    const StageTimer meshing_timer;
+    const sim::OracleMesh meshed = sim::mesh_dexels(simulation.grid);
+    const auto meshing_time = meshing_timer.elapsed();
+
+    const std::string output = args.output.empty() ? default_output(job) : args.output;
+    const io::WriteOptions encoding{.encoding = args.ascii ? io::Encoding::Ascii : io::Encoding::Binary};
+    io::write_mesh(output, meshed.mesh, encoding);
+    if (!args.oracle.empty()) {
+        io::write_mesh(args.oracle, meshed.mesh, encoding,
+                       {.vertex_normals = meshed.normals, .vertex_surfaces = meshed.surface_ids});
+    }
+    if (args.quiet) return;
+    const auto& counts = simulation.grid.spec.counts;
+    std::ostringstream s;
+    s << job.program << ": " << simulation.stats.moves << " moves ("
+      << simulation.stats.cutting_moves << " cutting, " << simulation.stats.swept_volumes
+      << " swept volumes), grid " << counts[0] << " x " << counts[1] << " x " << counts[2]
+      << " at h = " << options.pitch << " mm\n"
+      << "  simulation " << seconds(simulation_time) << " s, meshing " << seconds(meshing_time)
+      << " s\n"
+      << "  " << meshed.mesh.face_count() << " triangles, " << meshed.mesh.vertex_count()
+      << " vertices -> " << output;
+    if (!args.oracle.empty()) s << ", oracle -> " << args.oracle;
+    s << "\n";
+    if (meshed.stats.clamped_vertices > 0) {
+        s << "  note: " << meshed.stats.clamped_vertices
+          << " vertices were taken from the nearest ray crossing off their cell edge\n";
+    }
+    std::cerr << s.str();
+}
+
+}  // namespace
+
+void add_simulate_command(CLI::App& app) {
+    auto args = std::make_shared<SimulateArguments>();
+    CLI::App* command = app.add_subcommand(
+        "simulate", "Mill a box stock along a G-code program on a tri-dexel grid and mesh the "
+                    "result with marching cubes, every vertex exactly on the machined surface. "
+                    "The job file (JSON) gives the stock, the tool table, the pitch and the "
+                    "program; see docs/oracle.md for the oracle file.");
+    command->add_option("job", args->job, "job file (JSON)")->required();
+    command->add_option("-o,--output", args->output,
+                        "mesh to write (.stl, .obj, .ply, .off); default: the program's path "
+                        "with .stl");
+    command->add_option("--oracle", args->oracle,
+                        "also write the mesh as PLY with each vertex's exact normal (nx ny nz) "
+                        "and surface id (surface)")
+        ->check([](const std::string& path) {
+            return std::filesystem::path(path).extension() == ".ply" ? std::string()
+                                                                      : "the oracle is a .ply file";
+        });
+    command->add_option("--pitch", args->pitch, "grid pitch h in mm (default: the job's)")
+        ->check(CLI::PositiveNumber);
+    command->add_option("--grid-phase", args->options.grid_phase,
+                        "grid nodes at stock min + (k + phase) * h")
+        ->capture_default_str();
+    command->add_option("--helix-tolerance", args->options.helix_tolerance,
+                        "largest distance (mm) of the ramps replacing a helical arc")
+        ->capture_default_str();
+    command->add_option("--bullnose-step", args->options.sweep.bullnose_step,
+                        "spacing (mm) of the tool copies that sample a bull-nose ramp")
+        ->capture_default_str();
+    command->add_flag("--ascii", args->ascii, "write STL and PLY as text instead of binary");
+    command->add_flag("-q,--quiet", args->quiet, "no progress bar and no summary");
+    command->callback([args] { run_simulate(*args); });
+}
+
+}  // namespace resharp::cli
