@@ -1,4 +1,5 @@
 #include <iostream>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -24,6 +25,13 @@ struct RestoreArguments {
 
 /// One flag per field of RestoreOptions; the defaults shown by --help are the struct's own.
 void bind_options(CLI::App& command, RestoreOptions& o) {
+    const std::map<std::string, CurvatureFeature> features{
+        {"magnitude", CurvatureFeature::Magnitude}, {"signed", CurvatureFeature::Signed}};
+    command.add_option("--curvature-feature", o.edges.feature,
+                       "what k-means clusters: 'signed' (k1, k2) as the paper, or 'magnitude' "
+                       "(|k|min, |k|max), which keeps concave and convex edges together")
+        ->transform(CLI::CheckedTransformer(features, CLI::ignore_case))
+        ->option_text("{magnitude,signed}=magnitude");
     command.add_option("--kmeans-tolerance", o.edges.kmeans_tolerance,
                        "eps_K (paper eq. 3.2): k-means stops when centres move less (1/length)")
         ->capture_default_str();
