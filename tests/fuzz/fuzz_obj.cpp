@@ -1,0 +1,8 @@
+#include "fuzz_reader.h"
+#include "resharp/io/obj.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    return resharp::fuzz::run(data, size, [](std::string_view bytes) {
+        return resharp::io::read_obj(bytes, "fuzz.obj");
+    });
+}
