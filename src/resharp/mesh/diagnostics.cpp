@@ -25,46 +25,46 @@ bool is_first_halfedge_of_edge(const Mesh& mesh, const Connectivity& c, Index h)
     return true;
 }
 
+bool has_vertex(const Triangle& t, Index v) { return t[0] == v || t[1] == v || t[2] == v; }
+
 bool is_duplicate_of_earlier(const Mesh& mesh, const Connectivity& c, Index f) {
-    Triangle sorted = mesh.triangles[f];
-    std::sort(sorted.begin(), sorted.end());
-    for (Index g : c.faces_around(mesh.triangles[f][0])) {
+    const Triangle& t = mesh.triangles[f];
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return false;  // counted as degenerate
+    for (Index g : c.faces_around(t[0])) {
         if (g >= f) break;  // rings are in increasing face order
-        Triangle other = mesh.triangles[g];
-        std::sort(other.begin(), other.end());
-        if (other == sorted) return true;
+        if (has_vertex(mesh.triangles[g], t[1]) && has_vertex(mesh.triangles[g], t[2])) return true;
     }
     return false;
 }
 
-/// A vertex is manifold when its faces, linked through shared edges at the vertex, form one fan.
+/// The half-edge of face f that starts at v.
+Index outgoing(const Mesh& mesh, Index f, Index v) {
+    const Triangle& t = mesh.triangles[f];
+    return 3 * f + (t[0] == v ? 0 : t[1] == v ? 1 : 2);
+}
+
+/// A vertex is manifold when its faces form one fan: turning around it from one face across
+/// manifold edges, forwards and then backwards, reaches every face of its ring.
 bool is_nonmanifold_vertex(const Mesh& mesh, const Connectivity& c, Index v) {
     const auto ring = c.faces_around(v);
     if (ring.size() < 2) return false;
-    std::vector<bool> reached(ring.size(), false);
-    std::vector<std::size_t> stack{0};
-    reached[0] = true;
-    std::size_t reached_count = 1;
-    while (!stack.empty()) {
-        const std::size_t i = stack.back();
-        stack.pop_back();
-        const Triangle& t = mesh.triangles[ring[i]];
-        for (std::size_t j = 0; j < ring.size(); ++j) {
-            if (reached[j]) continue;
-            const Triangle& u = mesh.triangles[ring[j]];
-            // Two faces at v are linked when they share a second vertex besides v.
-            bool linked = false;
-            for (Index a : t) {
-                if (a != v && std::find(u.begin(), u.end(), a) != u.end()) linked = true;
-            }
-            if (linked) {
-                reached[j] = true;
-                ++reached_count;
-                stack.push_back(j);
-            }
-        }
+    const Index first = outgoing(mesh, ring[0], v);
+    std::size_t reached = 1;
+    Index h = first;
+    for (;;) {  // forwards: across the edge entering v
+        const Index twin = c.twin[prev_halfedge(h)];
+        if (twin == kNoIndex) break;
+        h = twin;
+        if (h == first) return reached != ring.size();  // closed fan
+        if (++reached > ring.size()) return true;
     }
-    return reached_count != ring.size();
+    for (h = first;;) {  // backwards: across the edge leaving v
+        const Index twin = c.twin[h];
+        if (twin == kNoIndex) break;
+        h = next_halfedge(twin);
+        if (++reached > ring.size()) return true;
+    }
+    return reached != ring.size();
 }
 
 }  // namespace
@@ -73,10 +73,9 @@ std::vector<bool> find_degenerate_faces(const Mesh& mesh) {
     std::vector<bool> degenerate(mesh.face_count(), false);
     for (std::size_t f = 0; f < mesh.face_count(); ++f) {
         const Triangle& t = mesh.triangles[f];
+        const Vec3& a = mesh.positions[t[0]];
         degenerate[f] = t[0] == t[1] || t[1] == t[2] || t[0] == t[2] ||
-                        triangle_normal(mesh.positions[t[0]], mesh.positions[t[1]],
-                                        mesh.positions[t[2]])
-                            .isZero(0.0);
+                        (mesh.positions[t[1]] - a).cross(mesh.positions[t[2]] - a).isZero(0.0);
     }
     return degenerate;
 }

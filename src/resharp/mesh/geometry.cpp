@@ -38,16 +38,16 @@ std::vector<Vec3> face_normals(const Mesh& mesh) {
     return normals;
 }
 
-std::vector<Vec3> vertex_normals(const Mesh& mesh, const Connectivity& connectivity,
-                                 const std::vector<Vec3>& normals) {
+std::vector<Vec3> vertex_normals(const Mesh& mesh, const Connectivity& connectivity) {
     std::vector<Vec3> result(mesh.vertex_count());
     tbb::parallel_for(
         tbb::blocked_range<std::size_t>(0, result.size(), 4096), [&](const auto& range) {
             for (std::size_t v = range.begin(); v != range.end(); ++v) {
-                Vec3 sum = Vec3::Zero();
+                Vec3 sum = Vec3::Zero();  // twice the area-weighted sum
                 for (Index f : connectivity.faces_around(static_cast<Index>(v))) {
-                    const int k = corner_of(mesh.triangles[f], static_cast<Index>(v));
-                    sum += corner_angle(mesh, f, k) * normals[f];
+                    const Triangle& t = mesh.triangles[f];
+                    const Vec3& a = mesh.positions[t[0]];
+                    sum += (mesh.positions[t[1]] - a).cross(mesh.positions[t[2]] - a);
                 }
                 const double length = sum.norm();
                 result[v] = length > 0.0 ? Vec3(sum / length) : Vec3::Zero();

@@ -18,10 +18,10 @@ double corner_angle(const Mesh& mesh, Index f, int k);
 /// Per face (#F): unit normals, zero for degenerate faces.
 std::vector<Vec3> face_normals(const Mesh& mesh);
 
-/// Per vertex (#V): angle-weighted mean of the incident face normals (paper eq. 5.1 over the
-/// whole one-ring), normalised; zero where every incident face is degenerate.
-std::vector<Vec3> vertex_normals(const Mesh& mesh, const Connectivity& connectivity,
-                                 const std::vector<Vec3>& face_normals);
+/// Per vertex (#V): area-weighted mean of the incident face normals, normalised; zero where
+/// every incident face is degenerate. Area weights need no trigonometry, which matters at a
+/// million corners; eq. 5.1's angle weights are kept for the feature normals that place points.
+std::vector<Vec3> vertex_normals(const Mesh& mesh, const Connectivity& connectivity);
 
 /// Angle in degrees between two unit vectors, robust near 0 and 180.
 double angle_deg(const Vec3& a, const Vec3& b);

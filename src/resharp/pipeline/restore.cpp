@@ -66,7 +66,7 @@ public:
             connectivity = build_connectivity(mesh_);
             report_.input = diagnose(mesh_, connectivity);
             face_normals = resharp::face_normals(mesh_);
-            vertex_normals = resharp::vertex_normals(mesh_, connectivity, face_normals);
+            vertex_normals = resharp::vertex_normals(mesh_, connectivity);
         });
         PrincipalCurvatures curvatures;
         timed(Stage::Curvature, [&] {

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <deque>
 #include <string>
 
 #include "resharp/core/disjoint_sets.h"
 #include "resharp/core/errors.h"
-#include "resharp/mesh/geometry.h"
 #include "resharp/segmentation/kmeans.h"
 
 namespace resharp {
@@ -166,25 +166,28 @@ std::size_t bridge_broken_edges(const Mesh& mesh, const Connectivity& c, int max
     return added;
 }
 
-double largest_ring_normal_angle(const Connectivity& c, const std::vector<Vec3>& face_normals,
-                                 Index v) {
+/// True when every two non-degenerate face normals around v are closer than the angle whose
+/// cosine is given (compared as cosines: no trigonometry per pair).
+bool has_flat_ring(const Connectivity& c, const std::vector<Vec3>& face_normals, Index v,
+                   double min_cosine) {
     const auto ring = c.faces_around(v);
-    double largest = 0.0;
     for (std::size_t a = 0; a < ring.size(); ++a) {
-        if (face_normals[ring[a]].isZero(0.0)) continue;
+        const Vec3& na = face_normals[ring[a]];
+        if (na.isZero(0.0)) continue;
         for (std::size_t b = a + 1; b < ring.size(); ++b) {
-            if (face_normals[ring[b]].isZero(0.0)) continue;
-            largest = std::max(largest, angle_deg(face_normals[ring[a]], face_normals[ring[b]]));
+            const Vec3& nb = face_normals[ring[b]];
+            if (!nb.isZero(0.0) && na.dot(nb) <= min_cosine) return false;
         }
     }
-    return largest;
+    return true;
 }
 
 std::size_t remove_flat(const Connectivity& c, const std::vector<Vec3>& face_normals,
                         double spread_deg, std::vector<std::uint8_t>& is_edge) {
+    const double min_cosine = std::cos(spread_deg * std::numbers::pi / 180.0);
     std::size_t removed = 0;
     for (Index v = 0; v < is_edge.size(); ++v) {
-        if (is_edge[v] && largest_ring_normal_angle(c, face_normals, v) < spread_deg) {
+        if (is_edge[v] && has_flat_ring(c, face_normals, v, min_cosine)) {
             is_edge[v] = 0;
             ++removed;
         }

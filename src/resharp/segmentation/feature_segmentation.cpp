@@ -107,46 +107,50 @@ std::vector<PatchRole> assign_roles(const PatchCensus& census,
     return role;
 }
 
-/// How a tiny patch touches one feature patch: shared edges and the summed angle between the
-/// face normals across them.
+/// How a tiny patch touches one feature patch: shared edges and the summed cosine of the angle
+/// between the face normals across them.
 struct Contact {
     Index patch = kNoIndex;
     std::size_t edges = 0;
-    double angle_sum_deg = 0.0;
+    double cosine_sum = 0.0;
 };
 
-/// For every tiny patch, its contacts with feature patches.
+/// For every tiny patch, its contacts with feature patches. Only the faces of tiny patches are
+/// visited: they are few, and the loop runs once per round of absorption.
 std::vector<std::vector<Contact>> tiny_contacts(const Connectivity& c,
                                                 const std::vector<Vec3>& normals,
                                                 const std::vector<Index>& region,
-                                                const std::vector<PatchRole>& role) {
+                                                const std::vector<PatchRole>& role,
+                                                const std::vector<Index>& tiny_faces) {
     std::vector<std::vector<Contact>> contacts(role.size());
-    for (std::size_t h = 0; h < c.twin.size(); ++h) {
-        const Index twin = c.twin[h];
-        if (twin == kNoIndex) continue;
-        const Index f = face_of(static_cast<Index>(h));
+    for (Index f : tiny_faces) {
         const Index mine = region[f];
-        const Index theirs = region[face_of(twin)];
-        if (role[mine] != PatchRole::Tiny || role[theirs] != PatchRole::Feature) continue;
-        auto& list = contacts[mine];
-        auto it = std::find_if(list.begin(), list.end(), [&](auto& e) { return e.patch == theirs; });
-        if (it == list.end()) it = list.insert(list.end(), Contact{theirs});
-        ++it->edges;
-        it->angle_sum_deg += angle_deg(normals[f], normals[face_of(twin)]);
+        if (role[mine] != PatchRole::Tiny) continue;
+        for (Index k = 0; k < 3; ++k) {
+            const Index twin = c.twin[3 * f + k];
+            if (twin == kNoIndex) continue;
+            const Index theirs = region[face_of(twin)];
+            if (role[theirs] != PatchRole::Feature) continue;
+            auto& list = contacts[mine];
+            auto it = std::find_if(list.begin(), list.end(), [&](auto& e) { return e.patch == theirs; });
+            if (it == list.end()) it = list.insert(list.end(), Contact{theirs});
+            ++it->edges;
+            it->cosine_sum += normals[f].dot(normals[face_of(twin)]);
+        }
     }
     return contacts;
 }
 
 /// The contact a tiny patch joins: the one with most shared edges among those whose normals
 /// agree across the border on average (same surface); kNoIndex if none does.
-Index absorbing_patch(const std::vector<Contact>& contacts, double max_angle_deg) {
+Index absorbing_patch(const std::vector<Contact>& contacts, double min_mean_cosine) {
     Index best = kNoIndex;
     std::size_t best_edges = 0;
     for (const Contact& contact : contacts) {
-        const double mean = contact.angle_sum_deg / static_cast<double>(contact.edges);
+        const double mean = contact.cosine_sum / static_cast<double>(contact.edges);
         const bool better = contact.edges > best_edges ||
                             (contact.edges == best_edges && contact.patch < best);
-        if (mean < max_angle_deg && better) {
+        if (mean > min_mean_cosine && better) {
             best = contact.patch;
             best_edges = contact.edges;
         }
@@ -163,15 +167,22 @@ Index absorbing_patch(const std::vector<Contact>& contacts, double max_angle_deg
 std::size_t absorb_tiny(const Connectivity& c, const std::vector<Vec3>& normals,
                         double max_angle_deg, std::vector<Index>& region,
                         std::vector<PatchRole>& role) {
+    std::vector<Index> tiny_faces;
+    for (Index f = 0; f < region.size(); ++f) {
+        if (role[region[f]] == PatchRole::Tiny) tiny_faces.push_back(f);
+    }
+    const double min_mean_cosine = std::cos(max_angle_deg * kDegree);
     std::size_t absorbed = 0;
     bool changed = true;
     while (changed) {
         changed = false;
-        const auto contacts = tiny_contacts(c, normals, region, role);
+        const auto contacts = tiny_contacts(c, normals, region, role, tiny_faces);
         std::vector<Index> target(role.size(), kNoIndex);
-        for (Index p = 0; p < role.size(); ++p) target[p] = absorbing_patch(contacts[p], max_angle_deg);
-        for (Index& r : region) {
-            if (target[r] != kNoIndex) r = target[r];
+        for (Index p = 0; p < role.size(); ++p) {
+            target[p] = absorbing_patch(contacts[p], min_mean_cosine);
+        }
+        for (Index f : tiny_faces) {
+            if (target[region[f]] != kNoIndex) region[f] = target[region[f]];
         }
         for (Index p = 0; p < role.size(); ++p) {
             if (target[p] == kNoIndex) continue;
@@ -186,23 +197,29 @@ std::size_t absorb_tiny(const Connectivity& c, const std::vector<Vec3>& normals,
     return absorbed;
 }
 
-/// Angle-weighted normal at v of the ring faces in patch p (eq. 5.1 restricted to one patch).
+/// Mean normal at v of its ring faces in patch p, leaving out faces that touch `away` (if
+/// given). Unweighted: these normals only vote (merging, labels), where the faces of a grid mesh
+/// are alike enough, and skipping the corner angles keeps this off the profile.
 Vec3 patch_normal_at(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>& normals,
-                     const std::vector<Index>& face_patch, Index v, Index p) {
+                     const std::vector<Index>& face_patch, Index v, Index p,
+                     Index away = kNoIndex) {
     Vec3 sum = Vec3::Zero();
     for (Index f : c.faces_around(v)) {
-        if (face_patch[f] == p) sum += corner_angle(mesh, f, corner_of(mesh.triangles[f], v)) * normals[f];
+        const Triangle& t = mesh.triangles[f];
+        if (face_patch[f] != p || t[0] == away || t[1] == away || t[2] == away) continue;
+        sum += normals[f];
     }
-    return sum.normalized();
+    const double length = sum.norm();
+    return length > 0.0 ? Vec3(sum / length) : Vec3::Zero();
 }
 
 /// Greedy merging of over-segmented patches (§4, Fig. 5): every vertex shared by two patches
-/// votes the angle between the two patches' normals there; pairs are merged in order of
-/// increasing median angle while it stays below the merge angle.
+/// votes the angle between the two patches' normals there (as its cosine); pairs are merged in
+/// order of increasing median angle while it stays below the merge angle.
 std::size_t merge_patches(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>& normals,
                           double merge_angle_deg, std::vector<Index>& face_patch,
                           std::size_t patch_count) {
-    std::vector<std::tuple<Index, Index, double>> votes;
+    std::vector<std::tuple<Index, Index, double>> votes;  // (a, b, -cosine): ascending = angle
     std::vector<Index> patches;
     for (Index v = 0; v < mesh.vertex_count(); ++v) {
         ring_patches(c, face_patch, v, patches);
@@ -211,12 +228,12 @@ std::size_t merge_patches(const Mesh& mesh, const Connectivity& c, const std::ve
             const Vec3 na = patch_normal_at(mesh, c, normals, face_patch, v, patches[a]);
             for (std::size_t b = a + 1; b < patches.size(); ++b) {
                 const Vec3 nb = patch_normal_at(mesh, c, normals, face_patch, v, patches[b]);
-                votes.emplace_back(patches[a], patches[b], angle_deg(na, nb));
+                votes.emplace_back(patches[a], patches[b], -na.dot(nb));
             }
         }
     }
     std::sort(votes.begin(), votes.end());
-    std::vector<std::tuple<double, Index, Index>> pairs;  // (median angle, a, b)
+    std::vector<std::tuple<double, Index, Index>> pairs;  // (median -cosine, a, b)
     for (std::size_t i = 0; i < votes.size();) {
         std::size_t j = i;
         while (j < votes.size() && std::get<0>(votes[j]) == std::get<0>(votes[i]) &&
@@ -230,8 +247,9 @@ std::size_t merge_patches(const Mesh& mesh, const Connectivity& c, const std::ve
     std::sort(pairs.begin(), pairs.end());
     DisjointSets sets(patch_count);
     std::size_t merges = 0;
-    for (const auto& [angle, a, b] : pairs) {
-        if (angle >= merge_angle_deg) break;
+    const double largest = -std::cos(merge_angle_deg * kDegree);
+    for (const auto& [negative_cosine, a, b] : pairs) {
+        if (negative_cosine >= largest) break;
         merges += sets.unite(a, b);
     }
     for (Index& p : face_patch) {
@@ -277,20 +295,6 @@ std::vector<Index> label_vertices(const Mesh& mesh, const Connectivity& c,
     return label;
 }
 
-/// Angle-weighted normal at q of its ring faces in patch p that do not touch vertex `away`.
-Vec3 patch_normal_away_from(const Mesh& mesh, const Connectivity& c,
-                            const std::vector<Vec3>& normals, const std::vector<Index>& face_patch,
-                            Index q, Index p, Index away) {
-    Vec3 sum = Vec3::Zero();
-    for (Index f : c.faces_around(q)) {
-        const Triangle& t = mesh.triangles[f];
-        if (face_patch[f] != p || t[0] == away || t[1] == away || t[2] == away) continue;
-        sum += corner_angle(mesh, f, corner_of(t, q)) * normals[f];
-    }
-    const double length = sum.norm();
-    return length > 0.0 ? Vec3(sum / length) : Vec3::Zero();
-}
-
 /// How far v rises out of the tangent plane of patch p at its neighbours labelled p: the
 /// smallest sine of the elevation of v seen from such a neighbour; infinity if none can tell.
 double elevation_from_patch(const Mesh& mesh, const Connectivity& c,
@@ -299,7 +303,7 @@ double elevation_from_patch(const Mesh& mesh, const Connectivity& c,
     double best = std::numeric_limits<double>::infinity();
     for_each_ring_vertex(mesh, c, v, [&](Index q) {
         if (label[q] != p) return;
-        const Vec3 n = patch_normal_away_from(mesh, c, normals, face_patch, q, p, v);
+        const Vec3 n = patch_normal_at(mesh, c, normals, face_patch, q, p, v);
         const Vec3 d = mesh.positions[v] - mesh.positions[q];
         if (n.isZero(0.0) || d.isZero(0.0)) return;
         best = std::min(best, std::abs(n.dot(d)) / d.norm());
