@@ -2,6 +2,8 @@
 /// Every parameter of the method, one struct per stage, defaults from the paper.
 ///   restore(mesh, {.features = {.max_normal_angle_deg = 6.0}});
 
+#include <span>
+
 #include "resharp/restoration/sharp_points.h"
 #include "resharp/segmentation/edge_segmentation.h"
 #include "resharp/segmentation/feature_segmentation.h"
@@ -17,6 +19,10 @@ struct RestoreOptions {
     /// Also return the per-vertex and per-face labels of both segmentations (for viewing what
     /// was detected, and for evaluation). Costs about 10 bytes per element.
     bool keep_segmentation = false;
+    /// If not empty (#V unit normals), used in place of the feature normals of eq. 5.1 at every
+    /// band vertex. For evaluation: with the simulator's exact normals it shows the ceiling of
+    /// the placement step. The caller keeps the data alive during restore().
+    std::span<const Vec3> normal_override;
 };
 
 }  // namespace resharp

@@ -96,6 +96,7 @@ public:
         timed(Stage::FeatureNormals, [&] {
             normals = feature_normals(mesh_, connectivity, face_normals, features.face_patch,
                                       features.vertex_patch, bands);
+            override_normals(normals);
         });
         SharpPoints points;
         timed(Stage::SharpPoints, [&] {
@@ -121,6 +122,14 @@ private:
         const StageTimer timer;
         work();
         report_.stage_time[static_cast<std::size_t>(stage)] = timer.elapsed();
+    }
+
+    void override_normals(std::vector<Vec3>& normals) const {
+        const auto& given = options_.normal_override;
+        if (given.empty()) return;
+        for (std::size_t v = 0; v < normals.size(); ++v) {
+            if (!normals[v].isZero(0.0)) normals[v] = given[v];
+        }
     }
 
     void keep(const EdgeSegmentation& edges, const FeatureSegmentation& features,
@@ -166,6 +175,11 @@ private:
 RestoreResult restore(const Mesh& input, const RestoreOptions& options) {
     validate_mesh(input);
     if (options.threads < 0) throw InvalidInput("thread count must not be negative");
+    if (!options.normal_override.empty() &&
+        options.normal_override.size() != input.vertex_count()) {
+        throw InvalidInput("normal override has " + std::to_string(options.normal_override.size()) +
+                           " normals for " + std::to_string(input.vertex_count()) + " vertices");
+    }
     RestoreResult result;
     RestoreReport& report = result.report;
     report.input_vertices = input.vertex_count();
