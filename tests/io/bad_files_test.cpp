@@ -3,54 +3,22 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <set>
-#include <sstream>
 
+#include "io/bad_file_manifest.h"
 #include "io/io_test_support.h"
 #include "resharp/io/mesh_io.h"
 
 namespace resharp::io {
 namespace {
 
-const std::filesystem::path kBadDir = std::filesystem::path(RESHARP_TEST_DATA_DIR) / "bad";
+using test::BadFileExpectation;
 
-struct Expectation {
-    std::string file;
-    std::string kind;      ///< "parse" (ParseError) or "read" (ReadError without location)
-    std::string location;  ///< "line N", "byte N", or "-"
-    std::string reason;    ///< a substring of what()
-};
-
-std::vector<Expectation> load_manifest() {
-    std::vector<Expectation> rows;
-    std::ifstream in(kBadDir / "MANIFEST.tsv");
-    for (std::string line; std::getline(in, line);) {
-        if (line.empty() || line[0] == '#') continue;
-        std::istringstream fields(line);
-        Expectation e;
-        std::getline(fields, e.file, '\t');
-        std::getline(fields, e.kind, '\t');
-        std::getline(fields, e.location, '\t');
-        std::getline(fields, e.reason);
-        rows.push_back(e);
-    }
-    return rows;
-}
-
-std::string test_name(const ::testing::TestParamInfo<Expectation>& info) {
-    std::string name = info.param.file;
-    for (char& c : name) {
-        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-    }
-    return name;
-}
-
-class BadFile : public ::testing::TestWithParam<Expectation> {};
+class BadFile : public ::testing::TestWithParam<BadFileExpectation> {};
 
 TEST_P(BadFile, IsRefusedWithFileLocationAndReason) {
-    const Expectation& e = GetParam();
-    const std::filesystem::path path = kBadDir / e.file;
+    const BadFileExpectation& e = GetParam();
+    const std::filesystem::path path = test::bad_files_dir() / e.file;
     try {
         read_mesh(path);
         FAIL() << "read_mesh accepted " << path;
@@ -67,17 +35,17 @@ TEST_P(BadFile, IsRefusedWithFileLocationAndReason) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Manifest, BadFile, ::testing::ValuesIn(load_manifest()), test_name);
+INSTANTIATE_TEST_SUITE_P(Manifest, BadFile, ::testing::ValuesIn(test::load_bad_file_manifest()),
+                         [](const auto& row) { return test::test_name_for(row.param.file); });
 
 TEST(BadFiles, ManifestCoversEveryFileAndAtLeastThirty) {
     std::set<std::string> listed;
-    for (const Expectation& e : load_manifest()) listed.insert(e.file);
+    for (const BadFileExpectation& e : test::load_bad_file_manifest()) listed.insert(e.file);
     std::set<std::string> present;
-    for (const std::string& name : test::files_in(kBadDir)) {
+    for (const std::string& name : test::files_in(test::bad_files_dir())) {
         if (name != "MANIFEST.tsv" && name != "make_bad_files.py") present.insert(name);
     }
-    // A missing-file expectation names a file that must not exist.
-    listed.erase("does_not_exist.stl");
+    listed.erase("does_not_exist.stl");  // names a file that must not exist
     EXPECT_EQ(listed, present);
     EXPECT_GE(present.size(), 30u);
 }

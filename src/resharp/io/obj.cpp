@@ -58,6 +58,7 @@ private:
             if (extra == kMaxExtraVertexValues) cursor_.fail("too many values in vertex record");
             cursor_.to_double(token, "vertex value");
         }
+        if (soup_.points.size() == kNoIndex) cursor_.fail("more vertices than resharp indexes");
         soup_.points.push_back(p);
     }
 

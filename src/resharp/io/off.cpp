@@ -46,6 +46,7 @@ private:
         if (const std::string_view extra = cursor_.token_in_line(); !extra.empty()) {
             cursor_.fail("unexpected " + detail::quoted(extra) + " after the counts");
         }
+        if (vertex_count_ >= kNoIndex) cursor_.fail("more vertices than resharp indexes");
         if (face_count_ == 0) cursor_.fail("OFF holds no faces");
         const std::uint64_t left = bytes_.size() - cursor_.offset();
         const auto vertices = static_cast<std::uint64_t>(vertex_count_);

@@ -18,6 +18,8 @@ namespace {
 constexpr std::size_t kHeaderBytes = 80;
 constexpr std::size_t kCountEnd = kHeaderBytes + 4;
 constexpr std::size_t kRecordBytes = 50;  // normal, 3 vertices (12 floats), 2 attribute bytes
+// Three soup points per triangle, indexed by 32-bit Index.
+constexpr std::uint64_t kMaxTriangles = kNoIndex / 3;
 
 bool starts_with_solid(std::string_view bytes) {
     const std::size_t first = bytes.find_first_not_of(" \t\r\n");
@@ -48,6 +50,7 @@ TriangleSoup read_binary(std::string_view bytes, const std::string& name) {
                                          " bytes) but only " + std::to_string(cursor.remaining()) +
                                          " bytes follow (file truncated?)");
     }
+    if (count > kMaxTriangles) cursor.fail_at(kHeaderBytes, "more triangles than resharp indexes");
     const std::size_t end = kCountEnd + std::size_t{count} * kRecordBytes;
     if (bytes.size() > end) {
         cursor.fail_at(end, std::to_string(bytes.size() - end) +
@@ -86,6 +89,7 @@ void read_ascii_facet(detail::TextCursor& cursor, TriangleSoup& soup) {
     for (int i = 0; i < 3; ++i) cursor.next_double("facet normal component");
     cursor.expect("outer");
     cursor.expect("loop");
+    if (soup.triangles.size() == kMaxTriangles) cursor.fail("more triangles than resharp indexes");
     const Index base = static_cast<Index>(soup.points.size());
     for (int k = 0; k < 3; ++k) {
         const std::string_view keyword = cursor.token();
