@@ -49,19 +49,20 @@ FacePolygon boundary_of(const Mesh& mesh, const SharpPoints& p, const SplitVerti
     return polygon;
 }
 
-double smallest_angle(const SplitVertices& ids, Index a, Index b, Index c) {
+/// Shape quality of a triangle, 1 for equilateral and 0 for degenerate: 4 sqrt(3) area over
+/// the sum of squared edge lengths. Ranks triangles like their smallest angle, without
+/// trigonometry.
+double shape_quality(const SplitVertices& ids, Index a, Index b, Index c) {
     const Vec3 &pa = ids.position(a), &pb = ids.position(b), &pc = ids.position(c);
-    auto angle = [](const Vec3& apex, const Vec3& u, const Vec3& w) {
-        const Vec3 x = u - apex, y = w - apex;
-        return std::atan2(x.cross(y).norm(), x.dot(y));
-    };
-    return std::min({angle(pa, pb, pc), angle(pb, pc, pa), angle(pc, pa, pb)});
+    const double edges = (pb - pa).squaredNorm() + (pc - pb).squaredNorm() + (pa - pc).squaredNorm();
+    if (edges == 0.0) return 0.0;
+    return 2.0 * std::sqrt(3.0) * (pb - pa).cross(pc - pa).norm() / edges;
 }
 
 /// Emits the pieces of face f, counter-clockwise like the face. With a corner point: a fan
 /// around it (Fig. 7b). Otherwise: an ear at each corner whose two edges were split (it lies on
 /// one feature, cut off by the new sharp edge), then the rest as one triangle or a quad split
-/// along the diagonal with the larger smallest angle — never along an original edge.
+/// along the diagonal that gives the better-shaped worse triangle, never along an original edge.
 template <class Emit>
 void emit_pieces(const Mesh& mesh, const SharpPoints& p, const SplitVertices& ids, Index f,
                  Emit&& emit) {
@@ -92,10 +93,10 @@ void emit_pieces(const Mesh& mesh, const SharpPoints& p, const SplitVertices& id
     }
     const bool may_use_02 = !(ids.is_original(rest.at(0)) && ids.is_original(rest.at(2)));
     const bool may_use_13 = !(ids.is_original(rest.at(1)) && ids.is_original(rest.at(3)));
-    const double quality_02 = std::min(smallest_angle(ids, rest.at(0), rest.at(1), rest.at(2)),
-                                       smallest_angle(ids, rest.at(0), rest.at(2), rest.at(3)));
-    const double quality_13 = std::min(smallest_angle(ids, rest.at(1), rest.at(2), rest.at(3)),
-                                       smallest_angle(ids, rest.at(1), rest.at(3), rest.at(0)));
+    const double quality_02 = std::min(shape_quality(ids, rest.at(0), rest.at(1), rest.at(2)),
+                                       shape_quality(ids, rest.at(0), rest.at(2), rest.at(3)));
+    const double quality_13 = std::min(shape_quality(ids, rest.at(1), rest.at(2), rest.at(3)),
+                                       shape_quality(ids, rest.at(1), rest.at(3), rest.at(0)));
     if (may_use_02 && (!may_use_13 || quality_02 >= quality_13)) {
         emit(rest.at(0), rest.at(1), rest.at(2));
         emit(rest.at(0), rest.at(2), rest.at(3));

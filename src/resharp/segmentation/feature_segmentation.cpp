@@ -67,6 +67,19 @@ void ring_patches(const Connectivity& c, const std::vector<Index>& face_patch, I
     }
 }
 
+/// The value of face_patch shared by every face around v, or kMixedRing when they differ.
+/// Most vertices are inside one patch; this lets the loops below skip them cheaply.
+constexpr Index kMixedRing = kNoIndex - 1;
+Index ring_patch_if_single(const Connectivity& c, const std::vector<Index>& face_patch, Index v) {
+    const auto ring = c.faces_around(v);
+    if (ring.empty()) return kMixedRing;
+    const Index first = face_patch[ring[0]];
+    for (Index f : ring) {
+        if (face_patch[f] != first) return kMixedRing;
+    }
+    return first;
+}
+
 struct PatchCensus {
     std::vector<std::size_t> faces, vertices, interior_vertices, edge_vertices;
 };
@@ -78,6 +91,13 @@ PatchCensus take_census(const Mesh& mesh, const Connectivity& c, const std::vect
     for (Index r : region) ++census.faces[r];
     std::vector<Index> patches;
     for (Index v = 0; v < mesh.vertex_count(); ++v) {
+        const Index single = ring_patch_if_single(c, region, v);
+        if (single != kMixedRing) {
+            ++census.vertices[single];
+            census.edge_vertices[single] += is_edge[v];
+            ++census.interior_vertices[single];
+            continue;
+        }
         ring_patches(c, region, v, patches);
         for (Index p : patches) {
             ++census.vertices[p];
@@ -276,6 +296,11 @@ std::vector<Index> label_vertices(const Mesh& mesh, const Connectivity& c,
     std::vector<Index> label(mesh.vertex_count(), kNoIndex);
     std::vector<std::pair<Index, int>> counts;
     for (Index v = 0; v < mesh.vertex_count(); ++v) {
+        const Index single = ring_patch_if_single(c, face_patch, v);
+        if (single != kMixedRing) {
+            label[v] = single;  // kNoIndex too: all faces in bands
+            continue;
+        }
         counts.clear();
         for (Index f : c.faces_around(v)) {
             const Index p = face_patch[f];
@@ -342,6 +367,8 @@ std::vector<Index> refine_border_labels(const Mesh& mesh, const Connectivity& c,
     std::vector<Index> refined = label;
     std::vector<Index> candidates;
     for (Index v = 0; v < mesh.vertex_count(); ++v) {
+        const Index single = ring_patch_if_single(c, face_patch, v);
+        if (single != kMixedRing && single != kNoIndex) continue;  // inside one patch
         candidate_patches(mesh, c, face_patch, label, v, candidates);
         if (candidates.size() < 2 && label[v] != kNoIndex) continue;
         double best = std::numeric_limits<double>::infinity();
