@@ -1,0 +1,110 @@
+#include "resharp/eval/validity.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <unordered_set>
+
+#include "resharp/core/errors.h"
+#include "resharp/eval/restoration_rate.h"
+#include "resharp/eval/self_intersections.h"
+#include "resharp/eval/uniform_grid.h"
+#include "resharp/mesh/diagnostics.h"
+
+namespace resharp::eval {
+namespace {
+
+double smallest_angle_deg(const Mesh& mesh) {
+    double smallest = 180.0;
+    for (const Triangle& t : mesh.triangles) {
+        for (int k = 0; k < 3; ++k) {
+            const Vec3& p = mesh.positions[t[k]];
+            const Vec3 a = mesh.positions[t[(k + 1) % 3]] - p, b = mesh.positions[t[(k + 2) % 3]] - p;
+            const double area2 = a.cross(b).norm();
+            if (area2 == 0.0) break;  // degenerate: counted apart
+            smallest = std::min(smallest, std::atan2(area2, a.dot(b)) * 180.0 / std::numbers::pi);
+        }
+    }
+    return smallest;
+}
+
+/// A face's vertex set as one key, for finding output faces that are input faces.
+struct FaceKey {
+    std::size_t operator()(const Triangle& t) const {
+        return (std::size_t{t[0]} * 73856093u) ^ (std::size_t{t[1]} * 19349663u) ^
+               (std::size_t{t[2]} * 83492791u);
+    }
+};
+
+/// The grid cell for point searches near the mesh: its mean edge length.
+double mean_edge_length(const Mesh& mesh) {
+    double sum = 0.0;
+    for (const Triangle& t : mesh.triangles) {
+        for (int k = 0; k < 3; ++k) {
+            sum += (mesh.positions[t[k]] - mesh.positions[t[(k + 1) % 3]]).norm();
+        }
+    }
+    return sum > 0.0 ? sum / (3.0 * double(mesh.face_count())) : 1.0;
+}
+
+Triangle sorted(Triangle t) {
+    std::sort(t.begin(), t.end());
+    return t;
+}
+
+}  // namespace
+
+MeshValidity check_validity(const Mesh& mesh) {
+    const MeshDiagnostics d = diagnose(mesh, build_connectivity(mesh));
+    MeshValidity v;
+    v.vertices = mesh.vertex_count();
+    v.triangles = mesh.face_count();
+    v.boundary_edges = d.boundary_edges;
+    v.nonmanifold_edges = d.nonmanifold_edges;
+    v.inconsistent_edges = d.inconsistent_edges;
+    v.degenerate_faces = d.degenerate_faces;
+    v.self_intersections = self_intersecting_pairs(mesh).size();
+    v.min_angle_deg = smallest_angle_deg(mesh);
+    return v;
+}
+
+std::size_t count_flipped_faces(const Mesh& input, const Mesh& output, const Oracle& oracle,
+                                const SurfaceSamples& exact, FlipScope scope) {
+    check_output_extends_input(input, output);
+    if (oracle.normals.size() != input.vertex_count()) {
+        throw InvalidInput("the oracle does not have one normal per input vertex");
+    }
+    std::unordered_set<Triangle, FaceKey> input_faces;
+    if (scope == FlipScope::ChangedFaces) {
+        for (const Triangle& t : input.triangles) input_faces.insert(sorted(t));
+    }
+    const detail::UniformGrid exact_grid(
+        exact.size(), [&](std::size_t i) { return detail::Box3(exact.points[i], exact.points[i]); },
+        mean_edge_length(input));
+    const Index first_new = static_cast<Index>(input.vertex_count());
+    std::size_t flipped = 0;
+    for (const Triangle& t : output.triangles) {
+        if (scope == FlipScope::ChangedFaces && input_faces.count(sorted(t))) continue;
+        const Vec3 &a = output.positions[t[0]], &b = output.positions[t[1]],
+                   &c = output.positions[t[2]];
+        const Vec3 n = (b - a).cross(c - a);
+        if (n.squaredNorm() == 0.0) continue;
+        bool is_flipped = false, has_input_vertex = false;
+        for (Index v : t) {
+            if (v >= first_new) continue;
+            has_input_vertex = true;
+            is_flipped = is_flipped || n.dot(oracle.normals[v]) <= 0.0;
+        }
+        if (!has_input_vertex && exact.size() > 0) {
+            const Vec3 centroid = (a + b + c) / 3.0;
+            const Index s = exact_grid.nearest(centroid, [&](Index i) {
+                return (exact.points[i] - centroid).norm();
+            }).first;
+            is_flipped = n.dot(exact.normals[s]) <= 0.0;
+        }
+        flipped += is_flipped;
+    }
+    return flipped;
+}
+
+}  // namespace resharp::eval

@@ -1,0 +1,43 @@
+#pragma once
+/// Mesh validity of a restored mesh (design.md §5): manifold, closed, oriented, flipped and
+/// self-intersecting triangles, smallest angle.
+
+#include <cstddef>
+
+#include "resharp/eval/ideal_points.h"
+#include "resharp/eval/surface_samples.h"
+#include "resharp/mesh/mesh.h"
+
+namespace resharp::eval {
+
+struct MeshValidity {
+    std::size_t vertices = 0;
+    std::size_t triangles = 0;
+    std::size_t boundary_edges = 0;      ///< edges with one face
+    std::size_t nonmanifold_edges = 0;   ///< edges with three or more faces
+    std::size_t inconsistent_edges = 0;  ///< edges whose two faces disagree on orientation
+    std::size_t degenerate_faces = 0;    ///< repeated vertex or zero area
+    std::size_t self_intersections = 0;  ///< intersecting face pairs (CGAL, exact predicates)
+    double min_angle_deg = 0.0;          ///< smallest corner angle of a non-degenerate face
+};
+
+/// Counts the defects of `mesh`; the self-intersection test dominates the time.
+MeshValidity check_validity(const Mesh& mesh);
+
+/// Which faces count_flipped_faces judges.
+enum class FlipScope {
+    AllFaces,      ///< every face (the input as the mesher left it)
+    ChangedFaces,  ///< faces not among the input's faces (pieces cut by restoration)
+};
+
+/// Faces turned against the surface they lie on: the face normal has a non-positive dot
+/// product with the exact normal (`oracle`) of one of its input vertices, or, for a face of new
+/// vertices only, with the normal of the exact sample nearest its centroid. Degenerate faces
+/// are not counted. `output` starts with `input`'s vertices; pass input as output with
+/// AllFaces to count the input's own flipped slivers.
+/// \throws InvalidInput if the output does not start with the input's vertices or the oracle
+/// does not have one normal per input vertex.
+std::size_t count_flipped_faces(const Mesh& input, const Mesh& output, const Oracle& oracle,
+                                const SurfaceSamples& exact, FlipScope scope);
+
+}  // namespace resharp::eval
