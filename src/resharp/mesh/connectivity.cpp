@@ -2,6 +2,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "resharp/core/errors.h"
+
 namespace resharp {
 namespace {
 
@@ -19,63 +21,61 @@ void build_rings(const Mesh& mesh, Connectivity& c) {
     }
 }
 
-/// A half-edge leaving a vertex, with its head, stored beside the vertex's ring so that finding
-/// twins reads contiguous memory instead of hopping through the triangle array.
-struct Outgoing {
-    Index head;
-    Index halfedge;
+/// A half-edge filed under the lower of its two vertices: the other vertex, and the half-edge
+/// with its top bit set when it runs from the lower vertex to the higher.
+struct EdgeEntry {
+    Index other;
+    Index tagged_halfedge;
 };
+constexpr Index kForwardBit = Index{1} << 31;
 
-/// Per ring entry (aligned with ring_faces): the face's half-edge leaving the ring's vertex.
-std::vector<Outgoing> outgoing_halfedges(const Mesh& mesh, const Connectivity& c) {
-    std::vector<Outgoing> out(c.ring_faces.size());
-    tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(mesh.vertex_count()), 4096),
-                      [&](const auto& range) {
-                          for (Index v = range.begin(); v != range.end(); ++v) {
-                              for (Index i = c.ring_offsets[v]; i < c.ring_offsets[v + 1]; ++i) {
-                                  const Index f = c.ring_faces[i];
-                                  const Triangle& t = mesh.triangles[f];
-                                  const Index k = t[0] == v ? 0 : t[1] == v ? 1 : 2;
-                                  out[i] = {t[(k + 1) % 3], 3 * f + k};
-                              }
-                          }
-                      });
-    return out;
+/// Files every half-edge under its lower vertex (a counting sort): the half-edges of one edge
+/// then sit side by side in a list of three or four entries, so finding twins reads contiguous
+/// memory instead of hopping through the triangle array.
+void file_halfedges(const Mesh& mesh, std::vector<Index>& offsets,
+                    std::vector<EdgeEntry>& entries) {
+    offsets.assign(mesh.vertex_count() + 1, 0);
+    for (const Triangle& t : mesh.triangles) {
+        for (int k = 0; k < 3; ++k) ++offsets[std::min(t[k], t[(k + 1) % 3]) + 1];
+    }
+    for (std::size_t v = 0; v < mesh.vertex_count(); ++v) offsets[v + 1] += offsets[v];
+    entries.resize(offsets.back());
+    std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
+    for (Index f = 0; f < mesh.face_count(); ++f) {
+        const Triangle& t = mesh.triangles[f];
+        for (Index k = 0; k < 3; ++k) {
+            const Index from = t[k], to = t[(k + 1) % 3];
+            const Index low = std::min(from, to);
+            entries[fill[low]++] = {std::max(from, to), (3 * f + k) | (from < to ? kForwardBit : 0)};
+        }
+    }
 }
 
-/// Classifies every half-edge leaving `from`: its twins run from its head back to `from`, so
-/// only the head's outgoing list needs a look; `from`'s own list tells whether another face
-/// runs the same way. Rings are small, so this beats sorting all 3F half-edges by key.
-void link_vertex(const Connectivity& c, const std::vector<Outgoing>& out, Index from,
-                 std::vector<Index>& twin, std::vector<EdgeKind>& kind) {
-    for (Index i = c.ring_offsets[from]; i < c.ring_offsets[from + 1]; ++i) {
-        const auto [to, h] = out[i];
-        if (to == from) {
+/// Classifies the half-edges filed under one vertex: those with the same other vertex lie on one
+/// edge; exactly two running opposite ways are twins.
+void link_edges_of(std::span<const EdgeEntry> filed, Index low, std::vector<Index>& twin,
+                   std::vector<EdgeKind>& kind) {
+    for (std::size_t i = 0; i < filed.size(); ++i) {
+        const Index h = filed[i].tagged_halfedge & ~kForwardBit;
+        if (filed[i].other == low) {
             kind[h] = EdgeKind::NonManifold;  // a collapsed edge of a degenerate face
             continue;
         }
-        Index opposite = kNoIndex;
-        int opposite_count = 0;
-        for (Index j = c.ring_offsets[to]; j < c.ring_offsets[to + 1]; ++j) {
-            if (out[j].head == from) {
-                opposite = out[j].halfedge;
-                ++opposite_count;
-            }
+        std::size_t sharing = 0, partner = i;
+        for (std::size_t j = 0; j < filed.size(); ++j) {
+            if (j == i || filed[j].other != filed[i].other) continue;
+            ++sharing;
+            partner = j;
         }
-        int same_direction_count = 0;
-        for (Index j = c.ring_offsets[from]; j < c.ring_offsets[from + 1]; ++j) {
-            same_direction_count += j != i && out[j].head == to;
-        }
-        const int sharing = 1 + opposite_count + same_direction_count;
-        if (sharing == 1) {
+        if (sharing == 0) {
             kind[h] = EdgeKind::Boundary;
-        } else if (sharing > 2) {
+        } else if (sharing > 1) {
             kind[h] = EdgeKind::NonManifold;
-        } else if (same_direction_count == 1) {
-            kind[h] = EdgeKind::Inconsistent;
-        } else {
+        } else if ((filed[i].tagged_halfedge ^ filed[partner].tagged_halfedge) & kForwardBit) {
             kind[h] = EdgeKind::Manifold;
-            twin[h] = opposite;
+            twin[h] = filed[partner].tagged_halfedge & ~kForwardBit;
+        } else {
+            kind[h] = EdgeKind::Inconsistent;
         }
     }
 }
@@ -83,16 +83,24 @@ void link_vertex(const Connectivity& c, const std::vector<Outgoing>& out, Index 
 }  // namespace
 
 Connectivity build_connectivity(const Mesh& mesh) {
+    if (mesh.face_count() >= kForwardBit / 3) {
+        throw InvalidInput("meshes of more than " + std::to_string(kForwardBit / 3 - 1) +
+                           " triangles are not supported");
+    }
     Connectivity c;
     build_rings(mesh, c);
     const std::size_t nh = 3 * mesh.face_count();
     c.twin.assign(nh, kNoIndex);
     c.edge_kind.assign(nh, EdgeKind::Boundary);
-    const std::vector<Outgoing> out = outgoing_halfedges(mesh, c);
+    std::vector<Index> offsets;
+    std::vector<EdgeEntry> entries;
+    file_halfedges(mesh, offsets, entries);
     tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(mesh.vertex_count()), 4096),
                       [&](const auto& range) {
                           for (Index v = range.begin(); v != range.end(); ++v) {
-                              link_vertex(c, out, v, c.twin, c.edge_kind);
+                              const std::span<const EdgeEntry> filed(
+                                  entries.data() + offsets[v], entries.data() + offsets[v + 1]);
+                              link_edges_of(filed, v, c.twin, c.edge_kind);
                           }
                       });
     return c;

@@ -57,7 +57,7 @@ void for_each_ring_vertex(const Mesh& mesh, const Connectivity& connectivity, In
 }
 
 /// Builds twins and rings. Takes any mesh with valid indices; defects are classified in
-/// edge_kind, never thrown.
+/// edge_kind, never thrown. \throws InvalidInput for meshes of 2^31 / 3 triangles or more.
 Connectivity build_connectivity(const Mesh& mesh);
 
 }  // namespace resharp

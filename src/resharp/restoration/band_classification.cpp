@@ -9,22 +9,24 @@ BandClassification classify_bands(const Mesh& mesh, const Connectivity& connecti
     BandClassification b;
     const std::size_t nh = connectivity.twin.size();
     b.is_crossing.assign(nh, 0);
-    for (Index h = 0; h < nh; ++h) {
-        const Index twin = connectivity.twin[h];
-        if (twin == kNoIndex || face_normals[face_of(h)].isZero(0.0) ||
-            face_normals[face_of(twin)].isZero(0.0)) {
-            continue;
-        }
-        const Index u = tail_vertex(mesh, h);
-        const Index v = head_vertex(mesh, h);
-        const bool different_features = vertex_patch[u] != kNoIndex &&
-                                        vertex_patch[v] != kNoIndex &&
-                                        vertex_patch[u] != vertex_patch[v];
-        // The edge-based labels confirm the border: region growing alone also splits smooth
-        // surfaces, whose border vertices have low curvature.
-        if (different_features && (is_edge_vertex[u] || is_edge_vertex[v])) {
-            b.is_crossing[h] = 1;
-            b.crossing_edges += h < twin;
+    for (Index f = 0; f < mesh.face_count(); ++f) {
+        const Triangle& t = mesh.triangles[f];
+        for (Index k = 0; k < 3; ++k) {
+            const Index h = 3 * f + k;
+            const Index twin = connectivity.twin[h];
+            if (twin == kNoIndex || twin < h) continue;  // each edge once, from its lower half
+            const Index u = t[k], v = t[(k + 1) % 3];
+            const bool different_features = vertex_patch[u] != kNoIndex &&
+                                            vertex_patch[v] != kNoIndex &&
+                                            vertex_patch[u] != vertex_patch[v];
+            // The edge-based labels confirm the border: region growing alone also splits smooth
+            // surfaces, whose border vertices have low curvature. Degenerate faces stay as they
+            // are. Labels are checked first: they rule out almost every edge, and cheaply.
+            if (different_features && (is_edge_vertex[u] || is_edge_vertex[v]) &&
+                !face_normals[f].isZero(0.0) && !face_normals[face_of(twin)].isZero(0.0)) {
+                b.is_crossing[h] = b.is_crossing[twin] = 1;
+                ++b.crossing_edges;
+            }
         }
     }
     b.face_role.assign(mesh.face_count(), BandRole::None);

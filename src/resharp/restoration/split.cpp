@@ -220,24 +220,35 @@ std::size_t repair_face(const Mesh& mesh, const Connectivity& c,
     return dropped;
 }
 
-/// Drops points until every face with points splits soundly. Only drops, so it ends.
+/// Repairs faces until every face with points splits soundly. A worklist holds the faces to
+/// check: first all faces with points, then, after a repair, the faces across its edges, whose
+/// split changed too. Repairs only drop points or move an edge's point onto a corner point
+/// once, so it ends.
 std::size_t drop_unsound_points(const Mesh& mesh, const Connectivity& c,
                                 const std::vector<Vec3>& face_normals,
                                 const ReferenceNormals& reference, SharpPoints& p,
                                 const SplitVertices& ids) {
-    std::vector<Index> candidates;
+    std::vector<Index> work;
+    std::vector<std::uint8_t> queued(mesh.face_count(), 0);
     for (Index f = 0; f < mesh.face_count(); ++f) {
-        if (has_points(p, f)) candidates.push_back(f);
+        if (has_points(p, f)) {
+            work.push_back(f);
+            queued[f] = 1;
+        }
     }
     std::size_t dropped = 0;
-    bool changed = true;
-    while (changed) {
-        changed = false;
-        for (Index f : candidates) {
-            if (has_points(p, f) &&
-                !pieces_are_sound(mesh, face_normals, reference, p, ids, f)) {
-                dropped += repair_face(mesh, c, face_normals, reference, p, ids, f);
-                changed = true;
+    for (std::size_t next = 0; next < work.size(); ++next) {
+        const Index f = work[next];
+        queued[f] = 0;
+        if (!has_points(p, f) || pieces_are_sound(mesh, face_normals, reference, p, ids, f)) {
+            continue;
+        }
+        dropped += repair_face(mesh, c, face_normals, reference, p, ids, f);
+        for (Index k = 0; k < 3; ++k) {
+            const Index twin = c.twin[3 * f + k];
+            if (twin != kNoIndex && !queued[face_of(twin)]) {
+                queued[face_of(twin)] = 1;
+                work.push_back(face_of(twin));
             }
         }
     }

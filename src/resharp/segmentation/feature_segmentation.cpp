@@ -341,11 +341,15 @@ double elevation_from_patch(const Mesh& mesh, const Connectivity& c,
 /// (h / 2r) and far below the dihedral angle of an edge worth restoring.
 constexpr double kOnPlaneSine = 0.2;
 
-/// The patches a vertex could lie on: those of its faces and those of its labelled neighbours.
+/// The patches a vertex could lie on: those of its faces, or, for a vertex whose faces all lie
+/// in bands, those of its labelled neighbours. A vertex with faces of a single patch (and band
+/// faces) keeps its vote: on a chamfer that follows the grid no band face grows into a feature,
+/// and the test below would only cost time.
 void candidate_patches(const Mesh& mesh, const Connectivity& c,
                        const std::vector<Index>& face_patch, const std::vector<Index>& label,
                        Index v, std::vector<Index>& out) {
     ring_patches(c, face_patch, v, out);
+    if (!out.empty()) return;
     for_each_ring_vertex(mesh, c, v, [&](Index q) {
         if (label[q] != kNoIndex && std::find(out.begin(), out.end(), label[q]) == out.end()) {
             out.push_back(label[q]);
@@ -370,7 +374,7 @@ std::vector<Index> refine_border_labels(const Mesh& mesh, const Connectivity& c,
         const Index single = ring_patch_if_single(c, face_patch, v);
         if (single != kMixedRing && single != kNoIndex) continue;  // inside one patch
         candidate_patches(mesh, c, face_patch, label, v, candidates);
-        if (candidates.size() < 2 && label[v] != kNoIndex) continue;
+        if (candidates.size() < 2 && label[v] != kNoIndex) continue;  // nothing to decide
         double best = std::numeric_limits<double>::infinity();
         Index best_patch = label[v];
         for (Index p : candidates) {
