@@ -38,16 +38,17 @@ PrincipalCurvatures estimate_principal_curvatures(const Mesh& mesh,
             const Vec3& x = mesh.positions[v];
             double lo = std::numeric_limits<double>::infinity();
             double hi = -lo;
+            // One sample per face, towards the vertex after v: around a closed fan that visits
+            // every neighbour once (a boundary vertex misses one neighbour).
             for (Index f : connectivity.faces_around(static_cast<Index>(v))) {
-                for (Index j : mesh.triangles[f]) {
-                    if (j == v) continue;
-                    const Vec3 d = mesh.positions[j] - x;
-                    const double length2 = d.squaredNorm();
-                    if (length2 == 0.0) continue;
-                    const double kappa = std::clamp(-2.0 * d.dot(n) / length2, -limit, limit);
-                    lo = std::min(lo, kappa);
-                    hi = std::max(hi, kappa);
-                }
+                const Triangle& t = mesh.triangles[f];
+                const Index j = t[0] == v ? t[1] : t[1] == v ? t[2] : t[0];
+                const Vec3 d = mesh.positions[j] - x;
+                const double length2 = d.squaredNorm();
+                if (length2 == 0.0) continue;
+                const double kappa = std::clamp(-2.0 * d.dot(n) / length2, -limit, limit);
+                lo = std::min(lo, kappa);
+                hi = std::max(hi, kappa);
             }
             if (lo <= hi && !n.isZero(0.0)) {
                 result.k1[v] = lo;

@@ -1,7 +1,5 @@
 #include "resharp/restoration/sharp_points.h"
 
-#include <Eigen/LU>
-
 #include "resharp/core/errors.h"
 #include "resharp/mesh/geometry.h"
 
@@ -12,10 +10,15 @@ namespace {
 /// would move by more than about 1e6 edge lengths per unit of normal error.
 constexpr double kParallelSine = 1e-6;
 
-std::optional<Vec3> solve_planes(const Eigen::Matrix3d& normals, const Vec3& offsets) {
-    // Rows are unit vectors, so |det| is the volume they span: a scale-free conditioning test.
-    if (std::abs(normals.determinant()) < kParallelSine) return std::nullopt;
-    return Vec3(normals.partialPivLu().solve(offsets));
+/// The point x with n_i . x = d_i for three unit normals, by Cramer's rule in vector form:
+/// x = (d_1 (n_2 x n_3) + d_2 (n_3 x n_1) + d_3 (n_1 x n_2)) / (n_1 . (n_2 x n_3)). The
+/// determinant is the volume the unit normals span: a scale-free conditioning test.
+std::optional<Vec3> solve_planes(const Vec3& n1, const Vec3& n2, const Vec3& n3, double d1,
+                                 double d2, double d3) {
+    const Vec3 n23 = n2.cross(n3);
+    const double det = n1.dot(n23);
+    if (std::abs(det) < kParallelSine) return std::nullopt;
+    return Vec3((d1 * n23 + d2 * n3.cross(n1) + d3 * n1.cross(n2)) / det);
 }
 
 }  // namespace
@@ -25,9 +28,7 @@ std::optional<Vec3> edge_point(const Vec3& a, const Vec3& n_a, const Vec3& b, co
     const double sine = direction.norm();
     if (sine < kParallelSine) return std::nullopt;
     const Vec3 d = direction / sine;
-    Eigen::Matrix3d rows;
-    rows << n_a.transpose(), n_b.transpose(), d.transpose();
-    return solve_planes(rows, Vec3(n_a.dot(a), n_b.dot(b), d.dot(0.5 * (a + b))));
+    return solve_planes(n_a, n_b, d, n_a.dot(a), n_b.dot(b), d.dot(0.5 * (a + b)));
 }
 
 bool passes_flip_test(const Vec3& a, const Vec3& n_a, const Vec3& b, const Vec3& n_b) {
@@ -43,9 +44,7 @@ bool passes_flip_test(const Vec3& a, const Vec3& n_a, const Vec3& b, const Vec3&
 
 std::optional<Vec3> corner_point(const Vec3& a, const Vec3& n_a, const Vec3& b, const Vec3& n_b,
                                  const Vec3& c, const Vec3& n_c) {
-    Eigen::Matrix3d rows;
-    rows << n_a.transpose(), n_b.transpose(), n_c.transpose();
-    return solve_planes(rows, Vec3(n_a.dot(a), n_b.dot(b), n_c.dot(c)));
+    return solve_planes(n_a, n_b, n_c, n_a.dot(a), n_b.dot(b), n_c.dot(c));
 }
 
 namespace {
