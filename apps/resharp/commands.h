@@ -19,5 +19,6 @@ enum ExitCode : int {
 // One add_*_command per subcommand, each defined in its own <name>_command.cpp.
 void add_restore_command(CLI::App& app);
 void add_simulate_command(CLI::App& app);
+void add_evaluate_command(CLI::App& app);
 
 }  // namespace resharp::cli

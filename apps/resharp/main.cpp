@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     add_restore_command(app);
     add_simulate_command(app);
+    add_evaluate_command(app);
 
     try {
         app.parse(argc, argv);

@@ -1,6 +1,7 @@
 #include "resharp/eval/uniform_grid.h"
 
 #include <cmath>
+#include <limits>
 
 namespace resharp::eval::detail {
 
@@ -45,6 +46,16 @@ Eigen::Vector3i UniformGrid::cell_of(const Vec3& p) const {
     const Eigen::Array3d c = ((p - origin_) / cell_).array().floor();
     const Eigen::Array3d top = (dims_.array() - 1).cast<double>();
     return c.max(0.0).min(top).cast<int>().matrix();
+}
+
+double UniformGrid::distance_to_box_boundary(const Vec3& p, const Eigen::Vector3i& lo,
+                                             const Eigen::Vector3i& hi) const {
+    double d = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < 3; ++a) {
+        if (lo[a] > 0) d = std::min(d, p[a] - (origin_[a] + lo[a] * cell_));
+        if (hi[a] < dims_[a] - 1) d = std::min(d, origin_[a] + (hi[a] + 1) * cell_ - p[a]);
+    }
+    return std::max(d, 0.0);
 }
 
 }  // namespace resharp::eval::detail

@@ -7,7 +7,9 @@
 /// cell), so a dense grid answers in a few cell visits without the tree's descent, builds in two
 /// linear passes (count, scatter: no per-cell allocation) and is trivially shared by threads.
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdlib>
 #include <functional>
 #include <limits>
 #include <utility>
@@ -42,6 +44,10 @@ public:
 
 private:
     Eigen::Vector3i cell_of(const Vec3& p) const;
+    /// How far p may move before it leaves the box of cells [lo, hi], ignoring sides where the
+    /// box reaches the end of the grid (no items lie beyond them).
+    double distance_to_box_boundary(const Vec3& p, const Eigen::Vector3i& lo,
+                                    const Eigen::Vector3i& hi) const;
     std::size_t linear(int x, int y, int z) const {
         return (static_cast<std::size_t>(z) * dims_.y() + y) * dims_.x() + x;
     }
@@ -71,27 +77,37 @@ template <class Distance>
 std::pair<Index, double> UniformGrid::nearest(const Vec3& p, Distance&& distance) const {
     std::pair<Index, double> best{kNoIndex, std::numeric_limits<double>::infinity()};
     if (items_.empty()) return best;
-    const Eigen::Vector3i home = cell_of(p);
-    const int max_shell = dims_.maxCoeff();
     auto consider = [&](Index item) {
         const double d = distance(item);
         if (d < best.second || (d == best.second && item < best.first)) best = {item, d};
     };
-    for (int k = 0; k <= max_shell; ++k) {
-        // Shell k: the cells at Chebyshev distance k from home. Every cell beyond it lies at
-        // least k cells away from p's (clamped) cell, hence at least k * cell_ from p.
+    const Eigen::Vector3i home = cell_of(p);
+    for (int k = 0;; ++k) {
         const Eigen::Vector3i lo = (home.array() - k).max(0).matrix();
         const Eigen::Vector3i hi = (home.array() + k).min(dims_.array() - 1).matrix();
+        const double cells =
+            double(hi.x() - lo.x() + 1) * (hi.y() - lo.y() + 1) * (hi.z() - lo.z() + 1);
+        const bool whole_grid = (lo.array() == 0).all() && (hi.array() == dims_.array() - 1).all();
+        if (cells > double(items_.size()) || whole_grid) {
+            // Far from everything (a sparse set): a plain scan costs less than more shells.
+            best = {kNoIndex, std::numeric_limits<double>::infinity()};
+            for (Index item : items_) consider(item);
+            return best;
+        }
+        // Shell k: the cells of the box [lo, hi] at Chebyshev distance k from home.
         for (int z = lo.z(); z <= hi.z(); ++z)
-            for (int y = lo.y(); y <= hi.y(); ++y)
-                for (int x = lo.x(); x <= hi.x(); ++x) {
+            for (int y = lo.y(); y <= hi.y(); ++y) {
+                const bool face = std::abs(z - home.z()) == k || std::abs(y - home.y()) == k;
+                const int step = face ? 1 : std::max(1, hi.x() - lo.x());
+                for (int x = lo.x(); x <= hi.x(); x += step) {
                     const int ring = std::max({std::abs(x - home.x()), std::abs(y - home.y()),
                                                std::abs(z - home.z())});
                     if (ring == k) visit_cell(x, y, z, consider);
                 }
-        if (best.second <= k * cell_) break;
+            }
+        // Every item not yet seen lies outside the box [lo, hi] (or beyond the grid, where
+        // nothing is), so at least as far from p as p is from that box's nearest inner face.
+        if (best.second <= distance_to_box_boundary(p, lo, hi)) return best;
     }
-    return best;
 }
-
 }  // namespace resharp::eval::detail

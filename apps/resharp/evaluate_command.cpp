@@ -1,0 +1,387 @@
+// `resharp evaluate`: scores a restored mesh against the simulator's oracle and the exact
+// surface (design.md §5, docs/results.md). A thin layer over resharp::eval.
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "resharp/core/errors.h"
+#include "resharp/core/stage_timer.h"
+#include "resharp/eval/detection.h"
+#include "resharp/eval/ideal_points.h"
+#include "resharp/eval/miss_causes.h"
+#include "resharp/eval/restoration_rate.h"
+#include "resharp/eval/surface_distance.h"
+#include "resharp/eval/validity.h"
+#include "resharp/io/atomic_file.h"
+#include "resharp/io/mesh_io.h"
+#include "resharp/io/ply.h"
+#include "resharp/pipeline/restore.h"
+#include "resharp/sim/gcode.h"
+#include "resharp/sim/job.h"
+#include "resharp/sim/simulate.h"
+
+namespace resharp::cli {
+namespace {
+
+using nlohmann::json;
+
+struct EvaluateArguments {
+    std::string input, oracle, job, output, segments, json;
+    bool restore = false;        // run restore() here instead of reading --output
+    bool exact_normals = false;  // with --restore: the oracle's normals replace eq. 5.1
+    CurvatureFeature feature = CurvatureFeature::Magnitude;
+    double sample_pitch = 0.25;  // exact samples: ray grid pitch in h
+    double grid_phase = sim::SimulationOptions{}.grid_phase;
+    eval::IdealPointOptions ideal;
+    eval::RestorationOptions restoration;
+    eval::SurfaceMetricsOptions surface;
+    bool quiet = false;
+};
+
+/// Positions as keys: binary STL holds floats, the oracle doubles, so both sides are keyed by
+/// their float rounding (two vertices of a grid mesh are never that close).
+struct PositionKey {
+    std::array<float, 3> c;
+    bool operator==(const PositionKey&) const = default;
+};
+struct PositionHash {
+    std::size_t operator()(const PositionKey& k) const {
+        std::size_t h = 0;
+        for (float f : k.c) h = h * 1000003u ^ std::hash<float>()(f);
+        return h;
+    }
+};
+PositionKey key_of(const Vec3& p) {
+    return {{static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())}};
+}
+
+using PositionIndex = std::unordered_map<PositionKey, Index, PositionHash>;
+
+PositionIndex index_positions(const std::vector<Vec3>& points) {
+    PositionIndex index;
+    for (std::size_t i = 0; i < points.size(); ++i) index.emplace(key_of(points[i]), Index(i));
+    return index;
+}
+
+const std::vector<double>& property(const io::PlyMesh& ply, const char* name,
+                                    const std::string& path) {
+    const std::vector<double>* values = ply.vertex_property(name);
+    if (!values) throw ReadError(path, std::string("no vertex property '") + name + "'");
+    return *values;
+}
+
+/// The oracle's normal and surface for every vertex of `input`, matched by position.
+eval::Oracle read_oracle(const std::string& path, const Mesh& input) {
+    const io::PlyMesh ply = io::read_ply_with_properties(path);
+    const auto &nx = property(ply, "nx", path), &ny = property(ply, "ny", path),
+               &nz = property(ply, "nz", path), &surface = property(ply, "surface", path);
+    const PositionIndex index = index_positions(ply.soup.points);
+    eval::Oracle oracle;
+    for (std::size_t v = 0; v < input.vertex_count(); ++v) {
+        const auto it = index.find(key_of(input.positions[v]));
+        if (it == index.end()) {
+            std::ostringstream s;
+            s << "input vertex " << v << " is not in the oracle " << path
+              << " (the oracle must come from the same simulation as the input)";
+            throw InvalidInput(s.str());
+        }
+        const Index o = it->second;
+        oracle.normals.push_back(Vec3(nx[o], ny[o], nz[o]).normalized());
+        oracle.surfaces.push_back(static_cast<std::int32_t>(surface[o]));
+    }
+    return oracle;
+}
+
+/// A restored mesh read from a file, renumbered so that it starts with the input's vertices
+/// (matched by position) and the new ones follow in the order the faces first use them.
+Mesh read_restored(const std::string& path, const Mesh& input) {
+    const Mesh read = weld(io::read_mesh(path));
+    const PositionIndex input_index = index_positions(input.positions);
+    std::vector<Index> renumber(read.vertex_count());
+    Mesh out{input.positions, {}};
+    std::vector<bool> seen(input.vertex_count(), false);
+    for (std::size_t v = 0; v < read.vertex_count(); ++v) {
+        const auto it = input_index.find(key_of(read.positions[v]));
+        if (it != input_index.end()) {
+            renumber[v] = it->second;
+            seen[it->second] = true;
+        } else {
+            renumber[v] = static_cast<Index>(out.positions.size());
+            out.positions.push_back(read.positions[v]);
+        }
+    }
+    for (std::size_t v = 0; v < seen.size(); ++v) {
+        if (!seen[v]) {
+            throw InvalidInput(path + ": input vertex " + std::to_string(v) +
+                               " is missing from the restored mesh");
+        }
+    }
+    for (const Triangle& t : read.triangles) {
+        out.triangles.push_back({renumber[t[0]], renumber[t[1]], renumber[t[2]]});
+    }
+    return out;
+}
+
+/// Face roles read back from `resharp restore --segments` (face colours, segments.cpp).
+std::vector<BandRole> read_segment_roles(const std::string& path, const Mesh& input) {
+    const io::PlyMesh ply = io::read_ply_with_properties(path);
+    const auto *r = ply.face_property("red"), *g = ply.face_property("green"),
+               *b = ply.face_property("blue");
+    if (!r || !g || !b) throw ReadError(path, "no face colours (red, green, blue)");
+    if (r->size() != input.face_count()) {
+        throw InvalidInput(path + ": face count differs from the input's");
+    }
+    std::vector<BandRole> roles(r->size(), BandRole::None);
+    for (std::size_t f = 0; f < roles.size(); ++f) {
+        const std::array<double, 3> c{(*r)[f], (*g)[f], (*b)[f]};
+        if (c == std::array<double, 3>{255, 210, 0}) roles[f] = BandRole::Edge;
+        if (c == std::array<double, 3>{230, 0, 230}) roles[f] = BandRole::Corner;
+    }
+    return roles;
+}
+
+json to_json(const eval::EdgeMetrics& e) {
+    return {{"exact_edge_samples", e.exact_edge_samples},
+            {"mesh_edge_samples", e.mesh_edge_samples},
+            {"ecd", e.ecd},
+            {"ef1", e.ef1}};
+}
+
+json to_json(const eval::SurfaceMetrics& m) {
+    return {{"exact_samples", m.exact_samples},
+            {"mesh_samples", m.mesh_samples},
+            {"chamfer_l1", m.chamfer_l1},
+            {"chamfer_l2", m.chamfer_l2},
+            {"hausdorff", m.hausdorff},
+            {"hausdorff_p99", m.hausdorff_p99},
+            {"normal_consistency", m.normal_consistency},
+            {"f1", m.f1},
+            {"edges_ndc", to_json(m.edges_ndc)},
+            {"edges_dihedral", to_json(m.edges_dihedral)}};
+}
+
+json to_json(const eval::MeshValidity& v) {
+    return {{"vertices", v.vertices},
+            {"triangles", v.triangles},
+            {"boundary_edges", v.boundary_edges},
+            {"nonmanifold_edges", v.nonmanifold_edges},
+            {"inconsistent_edges", v.inconsistent_edges},
+            {"degenerate_faces", v.degenerate_faces},
+            {"self_intersections", v.self_intersections},
+            {"min_angle_deg", v.min_angle_deg}};
+}
+
+json to_json(const eval::DetectionScore& d) {
+    return {{"detected", d.detected},
+            {"actual", d.actual},
+            {"matched", d.matched},
+            {"precision", d.precision},
+            {"recall", d.recall}};
+}
+
+json to_json(const eval::MissCauses& c) {
+    json edges, corners;
+    for (std::size_t k = 0; k < eval::kMissCauseCount; ++k) {
+        const std::string name(eval::miss_cause_name(static_cast<eval::MissCause>(k)));
+        edges[name] = c.edges[k];
+        corners[name] = c.corners[k];
+    }
+    return {{"edges", edges}, {"corners", corners}};
+}
+
+/// The restored mesh and what the method detected, from restore() here or from files.
+struct Restored {
+    Mesh mesh;
+    Segmentation segmentation;  // empty unless known
+    std::string detection_source;
+};
+
+Restored obtain_restored(const EvaluateArguments& args, const Mesh& input,
+                         const eval::Oracle& oracle) {
+    if (!args.restore) {
+        Restored r{read_restored(args.output, input), {}, "none"};
+        if (!args.segments.empty()) {
+            r.segmentation.face_role = read_segment_roles(args.segments, input);
+            r.detection_source = "segments file (face colours)";
+        }
+        return r;
+    }
+    RestoreOptions options;
+    options.edges.feature = args.feature;
+    options.keep_segmentation = true;
+    if (args.exact_normals) options.normal_override = oracle.normals;
+    RestoreResult result = restore(input, options);
+    if (!args.output.empty()) io::write_mesh(args.output, result.mesh);
+    return {std::move(result.mesh), std::move(result.segmentation), "restore() in process"};
+}
+
+sim::Simulation simulate_fine(const sim::Job& job, const EvaluateArguments& args) {
+    const sim::ToolPath path = sim::read_gcode(job.program, {.start_position = job.start_position});
+    sim::SimulationOptions options;
+    options.pitch = job.pitch * args.sample_pitch;
+    options.grid_phase = args.grid_phase;
+    return sim::simulate(job.stock, job.tools, path, options);
+}
+
+void run_evaluate(EvaluateArguments args) {
+    const StageTimer total;
+    const sim::Job job = sim::read_job(args.job);
+    const double h = job.pitch;
+    args.restoration.pitch = args.surface.pitch = h;
+
+    const Mesh input = weld(io::read_mesh(args.input));
+    const eval::Oracle oracle = read_oracle(args.oracle, input);
+    const Restored restored = obtain_restored(args, input, oracle);
+    const Mesh& output = restored.mesh;
+    eval::check_output_extends_input(input, output);
+
+    const StageTimer sampling;
+    const sim::Simulation fine = simulate_fine(job, args);
+    const eval::SurfaceSamples exact = eval::sample_exact_surface(fine.grid);
+    const double sampling_seconds = std::chrono::duration<double>(sampling.elapsed()).count();
+
+    const auto ideal = eval::find_ideal_points(input, oracle, args.ideal);
+    const eval::RestorationScore score =
+        eval::score_restoration(input, output, ideal, exact, args.restoration);
+    const eval::MissCauses causes = eval::find_miss_causes(
+        input, output, ideal, score.ideal_distance, args.restoration.tolerance * h,
+        restored.segmentation);
+
+    json j;
+    j["restoration_rate"] = score.rate;
+    j["restoration_rate_edges"] = score.rate_edges;
+    j["restoration_rate_corners"] = score.rate_corners;
+    j["false_insertions"] = score.false_insertions;
+    j["max_new_vertex_distance"] = score.max_new_vertex_distance;
+    j["ideal_points"] = {{"edges", score.ideal_edges},
+                         {"corners", score.ideal_corners},
+                         {"restored_edges", score.restored_edges},
+                         {"restored_corners", score.restored_corners},
+                         {"new_vertices", score.new_vertices}};
+    j["miss_causes"] = to_json(causes);
+    j["detection_source"] = restored.detection_source;
+    j["detection_precision"] = nullptr;
+    j["detection_recall"] = nullptr;
+    if (!restored.segmentation.face_role.empty()) {
+        const auto d = eval::score_detection(restored.segmentation.face_role,
+                                             eval::true_band_roles(input, oracle, args.ideal));
+        j["detection_precision"] = d.bands.precision;
+        j["detection_recall"] = d.bands.recall;
+        j["detection"] = {{"bands", to_json(d.bands)}, {"corners", to_json(d.corners)}};
+    }
+
+    const eval::MeshValidity valid_in = eval::check_validity(input);
+    const eval::MeshValidity valid_out = eval::check_validity(output);
+    j["flipped_triangles"] =
+        eval::count_flipped_faces(input, output, oracle, exact, eval::FlipScope::ChangedFaces);
+    j["flipped_triangles_input"] =
+        eval::count_flipped_faces(input, input, oracle, exact, eval::FlipScope::AllFaces);
+    j["self_intersections"] = valid_out.self_intersections;
+    j["self_intersections_input"] = valid_in.self_intersections;
+    j["nonmanifold_edges"] = valid_out.nonmanifold_edges;
+    j["boundary_edges"] = valid_out.boundary_edges;
+    j["validity"] = {{"input", to_json(valid_in)}, {"output", to_json(valid_out)}};
+
+    const eval::SurfaceSamples input_samples = eval::sample_mesh(input, fine.grid.spec);
+    const eval::SurfaceSamples output_samples = eval::sample_mesh(output, fine.grid.spec);
+    j["surface"] = {
+        {"output", to_json(eval::compare_surfaces(output, output_samples, exact, args.surface))},
+        {"input", to_json(eval::compare_surfaces(input, input_samples, exact, args.surface))}};
+
+    j["settings"] = {{"h_mm", h},
+                     {"sharp_angle_deg", args.ideal.sharp_angle_deg},
+                     {"tau_h", args.restoration.tolerance},
+                     {"sample_pitch_h", args.sample_pitch},
+                     {"edge_radius_h", args.surface.edge_radius},
+                     {"edge_max_abs_dot", args.surface.edge_max_abs_dot},
+                     {"edge_dihedral_deg", args.surface.edge_dihedral_deg},
+                     {"f1_threshold_h", args.surface.f1_threshold},
+                     {"edge_f1_threshold_h", args.surface.edge_f1_threshold},
+                     {"lengths", "mm"}};
+    j["time_seconds"] = {{"exact_sampling", sampling_seconds},
+                         {"total", std::chrono::duration<double>(total.elapsed()).count()}};
+
+    if (!args.json.empty()) {
+        const std::string text = j.dump(2) + "\n";
+        io::write_atomically(args.json, [&](std::ostream& out) { out << text; });
+    }
+    if (args.quiet) return;
+    std::ostringstream s;
+    s << "restoration rate " << score.rate * 100 << " % (edges " << score.restored_edges << "/"
+      << score.ideal_edges << ", corners " << score.restored_corners << "/" << score.ideal_corners
+      << "), false insertions " << score.false_insertions << ", flipped "
+      << j["flipped_triangles"] << ", self-intersections " << valid_out.self_intersections
+      << " (input " << valid_in.self_intersections << ")\n";
+    std::cerr << s.str();
+}
+
+}  // namespace
+
+void add_evaluate_command(CLI::App& app) {
+    auto args = std::make_shared<EvaluateArguments>();
+    CLI::App* command = app.add_subcommand(
+        "evaluate",
+        "Score a restored mesh against the simulator's oracle and the exact surface: restoration "
+        "rate, detection, surface distances, validity (docs/results.md). Lengths are in mm, "
+        "thresholds in units of the job's pitch h.");
+    command->add_option("--input", args->input, "the simulated mesh (resharp simulate -o)")
+        ->required();
+    command->add_option("--oracle", args->oracle, "its oracle PLY (resharp simulate --oracle)")
+        ->required();
+    command->add_option("--job", args->job, "the job file the mesh was simulated from; its "
+                                            "surface is sampled again on a finer grid")
+        ->required();
+    command->add_option("--output", args->output,
+                        "the restored mesh (with --restore: where to write it, optional)");
+    command->add_option("--segments", args->segments,
+                        "the --segments PLY of the same restore run: edge and corner triangles "
+                        "for detection precision and recall");
+    command->add_option("--json", args->json, "write every metric as JSON");
+    command->add_flag("--restore", args->restore,
+                      "run restore() here on the input instead of reading --output (default "
+                      "options), so detection and miss causes use the method's own labels");
+    const std::map<std::string, CurvatureFeature> features{
+        {"magnitude", CurvatureFeature::Magnitude}, {"signed", CurvatureFeature::Signed}};
+    command->add_option("--curvature-feature", args->feature, "with --restore: as restore's")
+        ->transform(CLI::CheckedTransformer(features, CLI::ignore_case));
+    command->add_flag("--exact-normals", args->exact_normals,
+                      "with --restore: the oracle's exact normals replace eq. 5.1 (the ceiling "
+                      "of the placement step)");
+    command->add_option("--sharp-angle", args->ideal.sharp_angle_deg,
+                        "theta_s: normals further apart make a sharp junction (degrees)")
+        ->capture_default_str();
+    command->add_option("--tolerance", args->restoration.tolerance,
+                        "tau in h: an ideal point is restored by a new vertex this near")
+        ->capture_default_str();
+    command->add_option("--sample-pitch", args->sample_pitch,
+                        "pitch of the ray grid sampling the exact surface and the meshes, in h")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    command->add_option("--grid-phase", args->grid_phase, "phase of that grid, as simulate's")
+        ->capture_default_str();
+    command->add_option("--edge-radius", args->surface.edge_radius,
+                        "r of the edge-sample test in h (NDC: 0.256 h)")
+        ->capture_default_str();
+    command->add_option("--edge-f1-threshold", args->surface.edge_f1_threshold,
+                        "Edge F-score distance threshold in h (NDC: 0.32 h)")
+        ->capture_default_str();
+    command->add_flag("-q,--quiet", args->quiet, "print no summary");
+    command->callback([args] {
+        if (!args->restore && args->output.empty()) {
+            throw CLI::ValidationError("--output", "needed unless --restore is given");
+        }
+        run_evaluate(*args);
+    });
+}
+
+}  // namespace resharp::cli
