@@ -1,10 +1,12 @@
 #include <iostream>
 #include <map>
+#include <optional>
 #include <memory>
 #include <string>
 
 #include "commands.h"
 #include "report_json.h"
+#include "resharp/core/errors.h"
 #include "resharp/io/atomic_file.h"
 #include "resharp/io/mesh_io.h"
 #include "resharp/pipeline/restore.h"
@@ -67,23 +69,52 @@ void bind_options(CLI::App& command, RestoreOptions& o) {
         ->capture_default_str();
 }
 
+/// The output files, opened before the work starts (a bad path fails at once) and committed
+/// together at the end: a run that fails anywhere leaves none of them.
+struct Outputs {
+    io::AtomicFile mesh;
+    std::optional<io::AtomicFile> segments;
+    std::optional<io::AtomicFile> report;
+
+    explicit Outputs(const RestoreArguments& args) : mesh(checked(args.output)) {
+        if (!args.segments.empty()) {
+            if (io::format_for_writing(args.segments) != io::MeshFormat::Ply) {
+                throw WriteError(args.segments, "segments are written as vertex and face "
+                                                "colours, which only PLY stores: use .ply");
+            }
+            segments.emplace(args.segments);
+        }
+        if (!args.report.empty()) report.emplace(args.report);
+    }
+    void commit_all() {
+        mesh.commit();
+        if (segments) segments->commit();
+        if (report) report->commit();
+    }
+
+private:
+    static const std::string& checked(const std::string& path) {
+        io::format_for_writing(path);
+        return path;
+    }
+};
+
 void run_restore(const RestoreArguments& args) {
     const Mesh input = weld(io::read_mesh(args.input));
+    Outputs outputs(args);
     RestoreOptions options = args.options;
-    options.keep_segmentation = !args.segments.empty();
+    options.keep_segmentation = outputs.segments.has_value();
     const RestoreResult result = restore(input, options);
 
     const io::WriteOptions encoding{.encoding = args.ascii ? io::Encoding::Ascii : io::Encoding::Binary};
-    io::write_mesh(args.output, result.mesh, encoding);
-    if (!args.segments.empty()) {
+    io::write_mesh(outputs.mesh, result.mesh, encoding);
+    if (outputs.segments) {
         const SegmentColors colors = color_segments(result.segmentation);
-        io::write_mesh(args.segments, input, encoding,
+        io::write_mesh(*outputs.segments, input, encoding,
                        {.vertex_colors = colors.vertex, .face_colors = colors.face});
     }
-    if (!args.report.empty()) {
-        const std::string json = report_to_json(result.report).dump(2) + "\n";
-        io::write_atomically(args.report, [&](std::ostream& out) { out << json; });
-    }
+    if (outputs.report) outputs.report->stream() << report_to_json(result.report).dump(2) << "\n";
+    outputs.commit_all();
     if (!args.quiet) std::cerr << summarize(result.report, args.input, args.output);
 }
 

@@ -44,20 +44,27 @@ TriangleSoup read_mesh(const std::filesystem::path& path) {
     throw ReadError(name, "unknown format");
 }
 
-void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const WriteOptions& options,
+void write_mesh(AtomicFile& file, const Mesh& mesh, const WriteOptions& options,
                 const MeshAttributes& attributes) {
+    const std::filesystem::path& path = file.target();
     const MeshFormat format = format_for_writing(path);
     if (!attributes.empty() && format != MeshFormat::Ply) {
         throw WriteError(path.string(), std::string("only PLY stores normals, surface ids and "
                                                     "colours; cannot write them as ") +
                                             format_name(format));
     }
-    AtomicFile file(path);
     try {
         write_format(file.stream(), format, mesh, options, attributes);
     } catch (const InvalidInput& e) {
         throw WriteError(path.string(), e.what());
     }
+}
+
+void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const WriteOptions& options,
+                const MeshAttributes& attributes) {
+    format_for_writing(path);  // an unknown extension fails before any file is created
+    AtomicFile file(path);
+    write_mesh(file, mesh, options, attributes);
     file.commit();
 }
 

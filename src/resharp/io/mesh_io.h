@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "resharp/io/atomic_file.h"
 #include "resharp/io/attributes.h"
 #include "resharp/io/format.h"
 #include "resharp/mesh/mesh.h"
@@ -30,5 +31,11 @@ TriangleSoup read_mesh(const std::filesystem::path& path);
 /// write_ply, write_off), or the file cannot be created, written or moved into place.
 void write_mesh(const std::filesystem::path& path, const Mesh& mesh,
                 const WriteOptions& options = {}, const MeshAttributes& attributes = {});
+
+/// As above, into an open AtomicFile (format from its target's extension) without committing
+/// it, so that a command writing several files can commit them together once all are written.
+/// \throws WriteError as above.
+void write_mesh(AtomicFile& file, const Mesh& mesh, const WriteOptions& options = {},
+                const MeshAttributes& attributes = {});
 
 }  // namespace resharp::io

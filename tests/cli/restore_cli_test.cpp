@@ -1,0 +1,131 @@
+// `resharp restore` as a user runs it: outputs and report on success, the same bytes whatever
+// the thread count, and no output at all when a stage fails or memory runs out.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace resharp::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kExample = fs::path(RESHARP_SOURCE_DIR) / "examples" / "bracket.stl";
+
+struct CliRun {
+    int exit_code = -1;
+    std::string stderr_text;
+};
+
+class RestoreCli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir_ = fs::temp_directory_path() /
+               ("resharp_restore_cli_" + std::to_string(::getpid())) / info->name();
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    /// Runs `resharp restore ARGS` through the shell (so `prefix` can set limits).
+    CliRun restore(const std::string& args, const std::string& prefix = "") const {
+        const fs::path err = dir_ / "stderr.txt";
+        const std::string command = prefix + std::string(RESHARP_CLI) + " restore " + args +
+                                    " 2>'" + err.string() + "'";
+        const int status = std::system(command.c_str());
+        CliRun run;
+        run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        std::ifstream in(err);
+        std::stringstream text;
+        text << in.rdbuf();
+        run.stderr_text = text.str();
+        return run;
+    }
+    std::string path(const std::string& name) const { return "'" + (dir_ / name).string() + "'"; }
+    /// Every file in the scratch folder except the captured stderr.
+    std::vector<std::string> outputs() const {
+        std::vector<std::string> names;
+        for (const auto& entry : fs::directory_iterator(dir_)) {
+            if (entry.path().filename() != "stderr.txt") names.push_back(entry.path().filename());
+        }
+        return names;
+    }
+    static std::string bytes_of(const fs::path& file) {
+        std::ifstream in(file, std::ios::binary);
+        std::stringstream s;
+        s << in.rdbuf();
+        return s.str();
+    }
+
+    fs::path dir_;
+};
+
+TEST_F(RestoreCli, RestoresTheExampleWithReportSegmentsAndSummary) {
+    const CliRun run = restore("'" + kExample.string() + "' -o " + path("out.stl") + " --report " +
+                            path("report.json") + " --segments " + path("segments.ply"));
+    ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+    EXPECT_NE(run.stderr_text.find("triangles in"), std::string::npos);
+    EXPECT_TRUE(fs::exists(dir_ / "out.stl"));
+    EXPECT_TRUE(fs::exists(dir_ / "segments.ply"));
+    const auto report = nlohmann::json::parse(bytes_of(dir_ / "report.json"));
+    EXPECT_EQ(report["input"]["triangles"], 39748);
+    EXPECT_GT(report["restoration"]["edge_points_inserted"].get<int>(), 2000);
+    EXPECT_EQ(report["output"]["vertices"].get<int>(),
+              report["input"]["vertices"].get<int>() +
+                  report["restoration"]["edge_points_inserted"].get<int>() +
+                  report["restoration"]["corner_points_inserted"].get<int>());
+    EXPECT_TRUE(report["time_seconds"]["stages"].contains("split"));
+}
+
+TEST_F(RestoreCli, SameBytesWithOneThreadAndTwo) {
+    ASSERT_EQ(restore("'" + kExample.string() + "' -q --threads 1 -o " + path("one.stl")).exit_code, 0);
+    ASSERT_EQ(restore("'" + kExample.string() + "' -q --threads 2 -o " + path("two.stl")).exit_code, 0);
+    const std::string one = bytes_of(dir_ / "one.stl");
+    EXPECT_GT(one.size(), 84u);
+    EXPECT_EQ(one, bytes_of(dir_ / "two.stl"));
+}
+
+TEST_F(RestoreCli, AnErrorInsideAStageLeavesNoOutput) {
+    // The option is read by feature segmentation, which refuses it after the mesh was read and
+    // the earlier stages ran.
+    const CliRun run = restore("'" + kExample.string() + "' --region-angle 0 -o " + path("out.stl") +
+                            " --report " + path("report.json"));
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_NE(run.stderr_text.find("resharp: error: region growing angle"), std::string::npos)
+        << run.stderr_text;
+    EXPECT_TRUE(outputs().empty());
+}
+
+TEST_F(RestoreCli, SegmentsMustBePly) {
+    const CliRun run = restore("'" + kExample.string() + "' -o " + path("out.stl") + " --segments " +
+                            path("segments.stl"));
+    EXPECT_EQ(run.exit_code, 3);
+    EXPECT_TRUE(outputs().empty());
+}
+
+#if !defined(__SANITIZE_ADDRESS__)
+// AddressSanitizer reserves terabytes of address space at start, which no `ulimit -v` allows;
+// the Release run of the suite covers this.
+TEST_F(RestoreCli, OutOfMemoryExitsFourAndLeavesNoOutput) {
+    // 16 MB of address space: the program starts, but reading and restoring the example (about
+    // 20 MB at peak) runs out. Where exactly it runs out depends on the machine; the contract
+    // does not.
+    const CliRun run = restore("'" + kExample.string() + "' -o " + path("out.stl") + " --report " +
+                                   path("report.json"),
+                               "ulimit -v 16000; ");
+    EXPECT_EQ(run.exit_code, 4) << run.stderr_text;
+    EXPECT_EQ(run.stderr_text.rfind("resharp: error: ", 0), 0u) << run.stderr_text;
+    EXPECT_TRUE(outputs().empty());
+}
+#endif
+
+}  // namespace
+}  // namespace resharp::cli
