@@ -1,0 +1,226 @@
+#!/usr/bin/env python3
+"""Regenerates docs/results.md: the results table of resharp on the four benchmark parts.
+
+    python3 bench/results.py [--build build] [--scratch /tmp/resharp-results] [--runs 5]
+
+For each part it runs `resharp simulate` on examples/<part>/job.json, times `resharp restore
+--threads 1` (median of --runs runs, default options and the paper's signed variant), and runs
+`resharp evaluate --restore` three times (ours, paper variant, exact normals). Python 3 stdlib
+only; every number in the page comes from these runs.
+"""
+
+import argparse
+import datetime
+import json
+import os
+import platform
+import statistics
+import subprocess
+import sys
+
+PARTS = ["mech", "frogface", "cavity", "impeller"]
+# Paper, Table 1 and section 6: triangles, restoration rate (%), stage times (s).
+PAPER = {
+    "mech": (277524, "100", 0.037, 0.116, 0.084, 0.237),
+    "frogface": (255792, "96", 0.047, 0.100, 0.069, 0.216),
+    "cavity": (272152, "79", 0.053, 0.147, 0.084, 0.284),
+    "impeller": (382254, "-", 0.069, 0.168, 0.116, 0.353),
+}
+GOALS = {"mech": 99.5, "frogface": 98.0, "cavity": 92.0, "impeller": None}
+VARIANTS = [  # (row name, extra evaluate flags)
+    ("ours", []),
+    ("paper variant (signed k-means)", ["--curvature-feature", "signed"]),
+    ("exact normals (placement ceiling)", ["--exact-normals"]),
+]
+EDGE_SEG = ["curvature", "edge segmentation"]
+FEATURE_SEG = ["feature segmentation"]
+RESTORATION = ["classification", "feature normals", "sharp points", "split"]
+CAUSES = ["no_feature_patch", "same_patch", "no_edge_vertex", "corner_not_detected",
+          "not_detected", "not_inserted", "placed_far"]
+
+
+def run(cmd):
+    print("+", " ".join(cmd), file=sys.stderr, flush=True)
+    subprocess.run(cmd, check=True)
+
+
+def load(path):
+    with open(path) as f:
+        return json.load(f)
+
+
+def time_restore(exe, mesh, scratch, part, runs, extra):
+    """Median stage times (s) over `runs` single-threaded runs."""
+    reports = []
+    for i in range(runs):
+        report = os.path.join(scratch, f"{part}_time_{i}.json")
+        run([exe, "restore", mesh, "-o", os.path.join(scratch, f"{part}_timed.ply"), "--report",
+             report, "--threads", "1", "-q"] + extra)
+        reports.append(load(report)["time_seconds"])
+    stages = {name: statistics.median(r["stages"][name] for r in reports)
+              for name in reports[0]["stages"]}
+    stages["total"] = statistics.median(r["total"] for r in reports)
+    return stages
+
+
+def evaluate_part(exe, root, scratch, part, runs):
+    job = os.path.join(root, "examples", part, "job.json")
+    mesh = os.path.join(scratch, f"{part}.ply")
+    oracle = os.path.join(scratch, f"{part}_oracle.ply")
+    run([exe, "simulate", job, "-o", mesh, "--oracle", oracle, "-q"])
+    result = {"times": time_restore(exe, mesh, scratch, part, runs, []),
+              "times_signed": time_restore(exe, mesh, scratch, part, runs,
+                                           ["--curvature-feature", "signed"]),
+              "rows": {}}
+    for name, flags in VARIANTS:
+        out = os.path.join(scratch, f"{part}_{len(result['rows'])}.json")
+        run([exe, "evaluate", "--input", mesh, "--oracle", oracle, "--job", job, "--restore",
+             "--json", out, "-q"] + flags)
+        result["rows"][name] = load(out)
+    return result
+
+
+def pct(x):
+    return "-" if x is None else f"{100 * x:.2f}"
+
+
+def mm(x, digits=4):
+    return "-" if x is None else f"{x:.{digits}f}"
+
+
+def surface_cells(s):
+    n, d = s["edges_ndc"], s["edges_dihedral"]
+    return [mm(s["chamfer_l1"]), f"{s['chamfer_l2']:.2e}", mm(s["hausdorff"], 3),
+            mm(s["hausdorff_p99"]), f"{s['normal_consistency']:.4f}",
+            f"{n['ecd']:.2e}" if n["ecd"] is not None else "-", f"{n['ef1']:.3f}",
+            f"{d['ecd']:.2e}" if d["ecd"] is not None else "-", f"{d['ef1']:.3f}"]
+
+
+def quality_table(results):
+    head = ["part", "row", "triangles", "rate % (paper)", "rate %", "edges %", "corners %",
+            "det. P %", "det. R %", "false ins.", "max new dist", "CD-L1", "CD-L2", "HD",
+            "HD99", "NC", "ECD", "EF1", "ECD 30°", "EF1 30°", "flipped", "self-int.",
+            "non-manif.", "boundary", "min angle °"]
+    lines = ["| " + " | ".join(head) + " |", "|" + " --- |" * len(head)]
+    for part, r in results.items():
+        ours = r["rows"]["ours"]
+        vin = ours["validity"]["input"]
+        lines.append("| " + " | ".join(
+            [part, "input, no restoration", str(vin["triangles"]), PAPER[part][1], "0", "0", "0",
+             "-", "-", "-", "-"] + surface_cells(ours["surface"]["input"]) +
+            [str(ours["flipped_triangles_input"]), str(vin["self_intersections"]),
+             str(vin["nonmanifold_edges"]), str(vin["boundary_edges"]),
+             f"{vin['min_angle_deg']:.2f}"]) + " |")
+        for name, _ in VARIANTS:
+            j = r["rows"][name]
+            v = j["validity"]["output"]
+            lines.append("| " + " | ".join(
+                [part, name, str(v["triangles"]), PAPER[part][1], pct(j["restoration_rate"]),
+                 pct(j["restoration_rate_edges"]), pct(j["restoration_rate_corners"]),
+                 pct(j["detection_precision"]), pct(j["detection_recall"]),
+                 str(j["false_insertions"]), mm(j["max_new_vertex_distance"], 3)] +
+                surface_cells(j["surface"]["output"]) +
+                [str(j["flipped_triangles"]), str(j["self_intersections"]),
+                 str(j["nonmanifold_edges"]), str(j["boundary_edges"]),
+                 f"{v['min_angle_deg']:.2f}"]) + " |")
+    return "\n".join(lines)
+
+
+def time_table(results, key):
+    head = ["part", "triangles (ours / paper)", "edge-based seg. (ours / paper)",
+            "feature-based seg.", "restoration", "mesh building (extra)", "total (ours / paper)"]
+    lines = ["| " + " | ".join(head) + " |", "|" + " --- |" * len(head)]
+    for part, r in results.items():
+        t, p = r[key], PAPER[part]
+        tri = r["rows"]["ours"]["validity"]["input"]["triangles"]
+        lines.append("| " + " | ".join([
+            part, f"{tri:,} / {p[0]:,}",
+            f"{sum(t[s] for s in EDGE_SEG):.4f} / {p[2]:.3f}",
+            f"{sum(t[s] for s in FEATURE_SEG):.4f} / {p[3]:.3f}",
+            f"{sum(t[s] for s in RESTORATION):.4f} / {p[4]:.3f}",
+            f"{t['mesh building']:.4f}", f"{t['total']:.4f} / {p[5]:.3f}"]) + " |")
+    return "\n".join(lines)
+
+
+def causes_table(results):
+    head = ["part", "row", "ideal edges", "ideal corners", "missed"] + CAUSES
+    lines = ["| " + " | ".join(head) + " |", "|" + " --- |" * len(head)]
+    for part, r in results.items():
+        for name, _ in VARIANTS:
+            j = r["rows"][name]
+            c, ip = j["miss_causes"], j["ideal_points"]
+            missed = (ip["edges"] - ip["restored_edges"]) + (ip["corners"] - ip["restored_corners"])
+            cells = [f"{c['edges'][k]} + {c['corners'][k]}" for k in CAUSES]
+            lines.append("| " + " | ".join([part, name, str(ip["edges"]), str(ip["corners"]),
+                                            str(missed)] + cells) + " |")
+    return "\n".join(lines)
+
+
+def goals_table(results):
+    lines = ["| part | goal | ours | met | flipped | self-intersections |",
+             "| --- | --- | --- | --- | --- | --- |"]
+    for part, r in results.items():
+        j, goal = r["rows"]["ours"], GOALS[part]
+        rate = 100 * j["restoration_rate"]
+        met = "-" if goal is None else ("yes" if rate >= goal else "no")
+        lines.append(f"| {part} | {'-' if goal is None else f'>= {goal}%'} | {rate:.2f}% | {met} "
+                     f"| {j['flipped_triangles']} | {j['self_intersections']} |")
+    return "\n".join(lines)
+
+
+def machine():
+    model = "unknown CPU"
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    model = line.split(":", 1)[1].strip()
+                    break
+    except OSError:
+        pass
+    load = os.getloadavg()
+    return (f"{model}, {os.cpu_count()} cores, {platform.system()} {platform.release()}; "
+            f"load average {load[0]:.2f} / {load[1]:.2f} / {load[2]:.2f} at the end of the run "
+            f"(the machine is shared with other engineers' builds)")
+
+
+def git_head(root):
+    try:
+        return subprocess.run(["git", "-C", root, "rev-parse", "--short", "HEAD"], check=True,
+                              capture_output=True, text=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
+def main():
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--build", default=os.path.join(root, "build"))
+    parser.add_argument("--scratch", default="/tmp/resharp-results")
+    parser.add_argument("--runs", type=int, default=5)
+    parser.add_argument("--parts", nargs="*", default=PARTS)
+    parser.add_argument("--output", default=os.path.join(root, "docs", "results.md"))
+    parser.add_argument("--raw", help="also write every JSON result here")
+    args = parser.parse_args()
+    exe = os.path.join(args.build, "resharp")
+    os.makedirs(args.scratch, exist_ok=True)
+    results = {p: evaluate_part(exe, root, args.scratch, p, args.runs) for p in args.parts}
+    if args.raw:
+        with open(args.raw, "w") as f:
+            json.dump(results, f, indent=1)
+    settings = results[args.parts[0]]["rows"]["ours"]["settings"]
+    template_path = os.path.join(root, "bench", "results_template.md")
+    with open(template_path) as f:
+        page = f.read()
+    page = page.format(
+        date=datetime.date.today().isoformat(), machine=machine(), commit=git_head(root),
+        runs=args.runs, settings=json.dumps(settings), goals=goals_table(results),
+        quality=quality_table(results), times=time_table(results, "times"),
+        times_signed=time_table(results, "times_signed"), causes=causes_table(results))
+    with open(args.output, "w") as f:
+        f.write(page)
+    print(f"wrote {args.output}", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,59 @@
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "resharp/eval/uniform_grid.h"
+
+namespace resharp::eval {
+namespace {
+
+using detail::Box3;
+using detail::UniformGrid;
+
+std::vector<Vec3> random_points(std::size_t n, double scale, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, scale);
+    std::vector<Vec3> p(n);
+    for (Vec3& x : p) x = Vec3(u(rng), u(rng), u(rng));
+    return p;
+}
+
+// Nearest by shells agrees with brute force, for queries inside, near and far outside the
+// points, dense and sparse sets (the sparse one falls back to a scan).
+TEST(UniformGrid, NearestMatchesBruteForce) {
+    for (const std::size_t count : {std::size_t{5}, std::size_t{2000}}) {
+        const auto points = random_points(count, 10.0, 1);
+        const UniformGrid grid(count, [&](std::size_t i) { return Box3(points[i], points[i]); },
+                               0.5);
+        for (const Vec3& q : random_points(200, 30.0, 2)) {
+            const Vec3 p = q - Vec3::Constant(10.0);
+            double best = 1e300;
+            for (const Vec3& x : points) best = std::min(best, (x - p).norm());
+            const auto [i, d] = grid.nearest(p, [&](Index k) { return (points[k] - p).norm(); });
+            EXPECT_DOUBLE_EQ(d, best);
+            EXPECT_DOUBLE_EQ((points[i] - p).norm(), best);
+        }
+    }
+}
+
+TEST(UniformGrid, ForEachNearVisitsEveryItemWithinRadius) {
+    const auto points = random_points(3000, 5.0, 3);
+    const UniformGrid grid(points.size(),
+                           [&](std::size_t i) { return Box3(points[i], points[i]); }, 0.3);
+    const Vec3 p(2.5, 2.5, 2.5);
+    std::vector<bool> seen(points.size(), false);
+    grid.for_each_near(p, 0.7, [&](Index k) { seen[k] = true; });
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        if ((points[k] - p).norm() <= 0.7) {
+            EXPECT_TRUE(seen[k]) << k;
+        }
+    }
+}
+
+TEST(UniformGrid, EmptyGridHasNoNearest) {
+    const UniformGrid grid(0, [](std::size_t) { return Box3(); }, 1.0);
+    EXPECT_EQ(grid.nearest(Vec3::Zero(), [](Index) { return 0.0; }).first, kNoIndex);
+}
+
+}  // namespace
+}  // namespace resharp::eval

@@ -1,0 +1,62 @@
+#include <gtest/gtest.h>
+
+#include "resharp/core/errors.h"
+#include "resharp/eval/validity.h"
+
+namespace resharp::eval {
+namespace {
+
+// A regular tetrahedron, outward oriented.
+Mesh tetrahedron() {
+    return {{Vec3(1, 1, 1), Vec3(1, -1, -1), Vec3(-1, 1, -1), Vec3(-1, -1, 1)},
+            {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}}};
+}
+
+TEST(Validity, ClosedTetrahedron) {
+    const MeshValidity v = check_validity(tetrahedron());
+    EXPECT_EQ(v.triangles, 4u);
+    EXPECT_EQ(v.boundary_edges, 0u);
+    EXPECT_EQ(v.nonmanifold_edges, 0u);
+    EXPECT_EQ(v.inconsistent_edges, 0u);
+    EXPECT_EQ(v.self_intersections, 0u);
+    EXPECT_NEAR(v.min_angle_deg, 60.0, 1e-9);
+}
+
+TEST(Validity, OpenFlippedAndCrossing) {
+    Mesh open = tetrahedron();
+    open.triangles.pop_back();
+    EXPECT_EQ(check_validity(open).boundary_edges, 3u);
+    Mesh flipped = tetrahedron();
+    std::swap(flipped.triangles[0][1], flipped.triangles[0][2]);
+    EXPECT_EQ(check_validity(flipped).inconsistent_edges, 3u);
+    // Two triangles piercing each other.
+    const Mesh crossing{{Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 2, 0), Vec3(0.5, 0.5, -1),
+                         Vec3(0.5, 0.5, 1), Vec3(1.5, 1.5, 0.5)},
+                        {{0, 1, 2}, {3, 4, 5}}};
+    EXPECT_EQ(check_validity(crossing).self_intersections, 1u);
+}
+
+// One input face on z = 0 with exact normals +z. The output replaces it by three faces around
+// a new centre vertex, one of them turned over, plus a face of new vertices only.
+TEST(Validity, FlippedFacesAgainstExactNormals) {
+    const Mesh input{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, {{0, 1, 2}}};
+    const Oracle oracle{{Vec3::UnitZ(), Vec3::UnitZ(), Vec3::UnitZ()}, {0, 0, 0}};
+    SurfaceSamples exact{{Vec3(0.3, 0.3, 0)}, {Vec3::UnitZ()}};
+    Mesh output = input;
+    output.positions.push_back(Vec3(0.3, 0.3, 0));    // 3
+    output.positions.push_back(Vec3(0.35, 0.3, 0));   // 4
+    output.positions.push_back(Vec3(0.3, 0.35, 0));   // 5
+    output.triangles = {{0, 1, 3}, {1, 2, 3}, {2, 3, 0}, {3, 5, 4}};  // {2,3,0} and {3,5,4}: -z
+    EXPECT_EQ(count_flipped_faces(input, output, oracle, exact, FlipScope::ChangedFaces), 2u);
+    // The input itself: no face flipped; with one vertex's normal reversed, its face is.
+    EXPECT_EQ(count_flipped_faces(input, input, oracle, exact, FlipScope::AllFaces), 0u);
+    EXPECT_EQ(count_flipped_faces(input, input, oracle, exact, FlipScope::ChangedFaces), 0u);
+    Oracle reversed = oracle;
+    reversed.normals[1] = -Vec3::UnitZ();
+    EXPECT_EQ(count_flipped_faces(input, input, reversed, exact, FlipScope::AllFaces), 1u);
+    EXPECT_THROW(count_flipped_faces(input, output, Oracle{}, exact, FlipScope::AllFaces),
+                 InvalidInput);
+}
+
+}  // namespace
+}  // namespace resharp::eval
