@@ -34,6 +34,17 @@ void bind_options(CLI::App& command, RestoreOptions& o) {
                        "(|k|min, |k|max), which keeps concave and convex edges together")
         ->transform(CLI::CheckedTransformer(features, CLI::ignore_case))
         ->option_text("{magnitude,signed}=magnitude");
+    const std::map<std::string, NormalEstimate> estimates{
+        {"fit", NormalEstimate::LinearFit}, {"angle-weighted", NormalEstimate::AngleWeighted}};
+    command.add_option("--normals", o.normals.estimate,
+                       "feature normals at band vertices: 'angle-weighted' is eq. 5.1 as the "
+                       "paper; 'fit' extrapolates the feature's face normals to the vertex, "
+                       "exact on planes and better on curved features")
+        ->transform(CLI::CheckedTransformer(estimates, CLI::ignore_case))
+        ->option_text("{fit,angle-weighted}=fit");
+    command.add_option("--max-fit-correction", o.normals.max_fit_correction_deg,
+                       "a fitted normal further than this (degrees) from eq. 5.1's is not used")
+        ->capture_default_str();
     command.add_option("--kmeans-tolerance", o.edges.kmeans_tolerance,
                        "eps_K (paper eq. 3.2): k-means stops when centres move less (1/length)")
         ->capture_default_str();

@@ -95,7 +95,7 @@ public:
         std::vector<Vec3> normals;
         timed(Stage::FeatureNormals, [&] {
             normals = feature_normals(mesh_, connectivity, face_normals, features.face_patch,
-                                      features.vertex_patch, bands);
+                                      features.vertex_patch, bands, options_.normals);
             override_normals(normals);
         });
         SharpPoints points;

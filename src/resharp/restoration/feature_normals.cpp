@@ -1,5 +1,12 @@
 #include "resharp/restoration/feature_normals.h"
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <span>
+
+#include <Eigen/Cholesky>
 #include <tbb/parallel_for.h>
 
 #include "resharp/mesh/geometry.h"
@@ -49,13 +56,64 @@ Vec3 neighbours_patch_normal(const Mesh& mesh, const Connectivity& c,
     return length > 0.0 ? Vec3(sum / length) : Vec3::Zero();
 }
 
+/// The faces wholly on v's patch around v and around its same-patch neighbours.
+void fit_faces(const Mesh& mesh, const Connectivity& c, const std::vector<Index>& face_patch,
+               const std::vector<Index>& vertex_patch, Index v, std::vector<Index>& out) {
+    out.clear();
+    const Index patch = vertex_patch[v];
+    auto take_ring = [&](Index q) {
+        for (Index f : c.faces_around(q)) {
+            if (face_patch[f] == patch && lies_on_patch(mesh.triangles[f], vertex_patch, patch) &&
+                std::find(out.begin(), out.end(), f) == out.end()) {
+                out.push_back(f);
+            }
+        }
+    };
+    take_ring(v);
+    for_each_ring_vertex(mesh, c, v, [&](Index q) {
+        if (vertex_patch[q] == patch) take_ring(q);
+    });
+}
+
+/// Least-squares fit n(x) = n0 + a u + b w of the face normals over the faces' centroids, with
+/// (u, w) the centroid's offset from v in the tangent plane of `guess`; returns n0, the fitted
+/// normal at v, or nullopt when the centroids do not span the plane.
+std::optional<Vec3> fit_normal_at(const Mesh& mesh, const std::vector<Vec3>& normals,
+                                  std::span<const Index> faces, Index v, const Vec3& guess) {
+    if (faces.size() < 4) return std::nullopt;
+    const Vec3 t1 = guess.unitOrthogonal();
+    const Vec3 t2 = guess.cross(t1);
+    Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+    Eigen::Matrix3d atb = Eigen::Matrix3d::Zero();  // rows: 1, u, w; columns: x, y, z
+    double scale = 0.0;
+    for (Index f : faces) {
+        const Triangle& t = mesh.triangles[f];
+        const Vec3 d = (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0 -
+                       mesh.positions[v];
+        const Eigen::Vector3d row(1.0, d.dot(t1), d.dot(t2));
+        ata += row * row.transpose();
+        atb += row * normals[f].transpose();
+        scale = std::max(scale, d.squaredNorm());
+    }
+    // The determinant scales as count^3 * length^4; below this share of that bound the
+    // centroids lie nearly on a line and the slope across it is a guess.
+    const double n = static_cast<double>(faces.size());
+    if (ata.determinant() < 1e-6 * n * n * n * scale * scale) return std::nullopt;
+    const Eigen::Matrix3d solution = ata.ldlt().solve(atb);
+    const Vec3 n0 = solution.row(0).transpose();
+    if (!n0.allFinite() || n0.isZero(0.0)) return std::nullopt;
+    return Vec3(n0.normalized());
+}
+
 }  // namespace
 
 std::vector<Vec3> feature_normals(const Mesh& mesh, const Connectivity& connectivity,
                                   const std::vector<Vec3>& face_normals,
                                   const std::vector<Index>& face_patch,
                                   const std::vector<Index>& vertex_patch,
-                                  const BandClassification& bands) {
+                                  const BandClassification& bands,
+                                  const FeatureNormalOptions& options) {
+    const double min_cosine = std::cos(options.max_fit_correction_deg * std::numbers::pi / 180.0);
     std::vector<std::uint8_t> needed(mesh.vertex_count(), 0);
     for (Index f = 0; f < mesh.face_count(); ++f) {
         if (bands.face_role[f] == BandRole::None) continue;
@@ -64,6 +122,7 @@ std::vector<Vec3> feature_normals(const Mesh& mesh, const Connectivity& connecti
     std::vector<Vec3> result(mesh.vertex_count(), Vec3::Zero());
     tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(mesh.vertex_count()), 4096),
                       [&](const auto& range) {
+                          std::vector<Index> faces;
                           for (Index v = range.begin(); v != range.end(); ++v) {
                               if (!needed[v] || vertex_patch[v] == kNoIndex) continue;
                               Vec3 n = own_patch_normal(mesh, connectivity, face_normals,
@@ -71,6 +130,12 @@ std::vector<Vec3> feature_normals(const Mesh& mesh, const Connectivity& connecti
                               if (n.isZero(0.0)) {
                                   n = neighbours_patch_normal(mesh, connectivity, face_normals,
                                                               face_patch, vertex_patch, v);
+                              }
+                              if (options.estimate == NormalEstimate::LinearFit && !n.isZero(0.0)) {
+                                  fit_faces(mesh, connectivity, face_patch, vertex_patch, v, faces);
+                                  const auto fitted =
+                                      fit_normal_at(mesh, face_normals, faces, v, n);
+                                  if (fitted && fitted->dot(n) > min_cosine) n = *fitted;
                               }
                               result[v] = n;
                           }

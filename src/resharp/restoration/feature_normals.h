@@ -9,16 +9,37 @@
 
 namespace resharp {
 
+/// How the normal of a band vertex's own feature is estimated.
+enum class NormalEstimate {
+    /// Eq. 5.1: the angle-weighted mean of the vertex's faces on its feature (the paper).
+    AngleWeighted,
+    /// A linear fit of the feature's face normals around the vertex (its faces and its
+    /// same-feature neighbours' faces), evaluated at the vertex. Those faces all lie on one side
+    /// of a band vertex, so on a curved feature their mean is the normal half a face inward;
+    /// the fit extrapolates to the vertex itself. Exact on planes, as eq. 5.1.
+    LinearFit,
+};
+
+struct FeatureNormalOptions {
+    NormalEstimate estimate = NormalEstimate::LinearFit;
+    /// A fitted normal further than this (degrees) from eq. 5.1's is not trusted; eq. 5.1's is
+    /// used instead.
+    double max_fit_correction_deg = 15.0;
+};
+
 /// Per vertex (#V): at each vertex of an edge or corner triangle, N = sum(theta_i N_i) / sum(theta_i) over
 /// the incident faces of the vertex's own feature patch (eq. 5.1), normalised; theta_i is the
 /// face's angle at the vertex. Faces whose three vertices all lie on that patch are preferred:
 /// a face that only leans into the patch from a band would tilt N towards the neighbouring
 /// feature. A vertex all of whose faces lie in bands takes the mean of its same-patch neighbours'
-/// normals. Zero at vertices off the bands, without a patch, or where nothing can tell.
+/// normals. Zero at vertices off the bands, without a patch, or where nothing can tell. With
+/// NormalEstimate::LinearFit the eq. 5.1 normal is then refined by the fit where it is well
+/// posed.
 std::vector<Vec3> feature_normals(const Mesh& mesh, const Connectivity& connectivity,
                                   const std::vector<Vec3>& face_normals,
                                   const std::vector<Index>& face_patch,
                                   const std::vector<Index>& vertex_patch,
-                                  const BandClassification& bands);
+                                  const BandClassification& bands,
+                                  const FeatureNormalOptions& options = {});
 
 }  // namespace resharp
