@@ -38,9 +38,9 @@ struct Stages {
         segment_features(mesh, connectivity, face_normals, edges.is_edge);
     BandClassification bands =
         classify_bands(mesh, connectivity, face_normals, edges.is_edge, features.vertex_patch);
-    std::vector<Vec3> normals = feature_normals(mesh, connectivity, face_normals,
-                                                features.face_patch, features.vertex_patch, bands);
-    SharpPoints points = place_sharp_points(mesh, connectivity, face_normals, bands, normals);
+    FeatureNormals normals = feature_normals(mesh, connectivity, face_normals,
+                                             features.face_patch, features.vertex_patch, bands);
+    SharpPoints points = place_sharp_points(mesh, connectivity, face_normals, bands, normals.normal);
 
     explicit Stages(const Mesh& m) : mesh(m) {}
 };
@@ -109,7 +109,7 @@ void BM_Restoration(benchmark::State& state, const std::string& name) {
         const auto normals = feature_normals(s.mesh, s.connectivity, s.face_normals,
                                              s.features.face_patch, s.features.vertex_patch, bands);
         SharpPoints points =
-            place_sharp_points(s.mesh, s.connectivity, s.face_normals, bands, normals);
+            place_sharp_points(s.mesh, s.connectivity, s.face_normals, bands, normals.normal);
         SplitReport report;
         std::vector<Index> source;
         benchmark::DoNotOptimize(split_band_triangles(s.mesh, s.connectivity, s.face_normals,

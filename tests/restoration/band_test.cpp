@@ -53,7 +53,8 @@ TEST(FeatureNormals, BandVerticesOfABoxGetTheirFacesExactNormal) {
     const Classified c = classify(shape.mesh);
     const std::vector<Vec3> n = feature_normals(shape.mesh, c.connectivity, c.face_normals,
                                                 c.features.face_patch, c.features.vertex_patch,
-                                                c.bands);
+                                                c.bands)
+                                    .normal;
     std::size_t checked = 0;
     for (Index f = 0; f < shape.mesh.face_count(); ++f) {
         if (c.bands.face_role[f] == BandRole::None) continue;

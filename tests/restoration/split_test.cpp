@@ -44,7 +44,7 @@ TEST(Split, OneCrossingEdgeSplitsBothFacesAtTheIdealPoint) {
     SplitReport report;
     std::vector<Index> source;
     const Mesh out = split_band_triangles(s.mesh, s.connectivity, s.face_normals,
-                                          s.feature_normals, s.feature_normals, points, report, source);
+                                          {s.feature_normals, std::vector<float>(4, 0.0f)}, s.feature_normals, points, report, source);
     EXPECT_EQ(source, (std::vector<Index>{0, 0, 1, 1}));
     EXPECT_EQ(report.refused_by_quality, 0u);
     EXPECT_EQ(report.new_vertices, 1u);
@@ -68,7 +68,7 @@ TEST(Split, DropsAPointWhoseSplitWouldTurnAPieceOver) {
     SplitReport report;
     std::vector<Index> source;
     const Mesh out = split_band_triangles(s.mesh, s.connectivity, s.face_normals,
-                                          s.feature_normals, s.feature_normals, points, report, source);
+                                          {s.feature_normals, std::vector<float>(4, 0.0f)}, s.feature_normals, points, report, source);
     EXPECT_EQ(report.refused_by_quality, 1u);
     EXPECT_EQ(out.vertex_count(), 4u);
     EXPECT_EQ(out.triangles, s.mesh.triangles);

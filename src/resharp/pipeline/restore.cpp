@@ -92,7 +92,7 @@ public:
         report_.crossing_edges = bands.crossing_edges;
         report_.edge_triangles = bands.edge_triangles;
         report_.corner_triangles = bands.corner_triangles;
-        std::vector<Vec3> normals;
+        FeatureNormals normals;
         timed(Stage::FeatureNormals, [&] {
             normals = feature_normals(mesh_, connectivity, face_normals, features.face_patch,
                                       features.vertex_patch, bands, options_.normals);
@@ -100,7 +100,7 @@ public:
         });
         SharpPoints points;
         timed(Stage::SharpPoints, [&] {
-            points = place_sharp_points(mesh_, connectivity, face_normals, bands, normals,
+            points = place_sharp_points(mesh_, connectivity, face_normals, bands, normals.normal,
                                         options_.points);
         });
         report_.refused_by_flip_test = points.refused_by_flip_test;
@@ -124,11 +124,12 @@ private:
         report_.stage_time[static_cast<std::size_t>(stage)] = timer.elapsed();
     }
 
-    void override_normals(std::vector<Vec3>& normals) const {
+    void override_normals(FeatureNormals& normals) const {
         const auto& given = options_.normal_override;
         if (given.empty()) return;
-        for (std::size_t v = 0; v < normals.size(); ++v) {
-            if (!normals[v].isZero(0.0)) normals[v] = given[v];
+        for (std::size_t v = 0; v < normals.normal.size(); ++v) {
+            if (!normals.normal[v].isZero(0.0)) normals.normal[v] = given[v];
+            normals.fit_correction_deg[v] = 0.0f;  // exact normals need no margin
         }
     }
 

@@ -107,7 +107,7 @@ std::optional<Vec3> fit_normal_at(const Mesh& mesh, const std::vector<Vec3>& nor
 
 }  // namespace
 
-std::vector<Vec3> feature_normals(const Mesh& mesh, const Connectivity& connectivity,
+FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivity,
                                   const std::vector<Vec3>& face_normals,
                                   const std::vector<Index>& face_patch,
                                   const std::vector<Index>& vertex_patch,
@@ -119,7 +119,8 @@ std::vector<Vec3> feature_normals(const Mesh& mesh, const Connectivity& connecti
         if (bands.face_role[f] == BandRole::None) continue;
         for (Index v : mesh.triangles[f]) needed[v] = 1;
     }
-    std::vector<Vec3> result(mesh.vertex_count(), Vec3::Zero());
+    FeatureNormals result{std::vector<Vec3>(mesh.vertex_count(), Vec3::Zero()),
+                          std::vector<float>(mesh.vertex_count(), 0.0f)};
     tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(mesh.vertex_count()), 4096),
                       [&](const auto& range) {
                           std::vector<Index> faces;
@@ -135,9 +136,13 @@ std::vector<Vec3> feature_normals(const Mesh& mesh, const Connectivity& connecti
                                   fit_faces(mesh, connectivity, face_patch, vertex_patch, v, faces);
                                   const auto fitted =
                                       fit_normal_at(mesh, face_normals, faces, v, n);
-                                  if (fitted && fitted->dot(n) > min_cosine) n = *fitted;
+                                  if (fitted && fitted->dot(n) > min_cosine) {
+                                      result.fit_correction_deg[v] =
+                                          static_cast<float>(angle_deg(*fitted, n));
+                                      n = *fitted;
+                                  }
                               }
-                              result[v] = n;
+                              result.normal[v] = n;
                           }
                       });
     return result;

@@ -27,6 +27,14 @@ struct FeatureNormalOptions {
     double max_fit_correction_deg = 15.0;
 };
 
+struct FeatureNormals {
+    std::vector<Vec3> normal;  ///< per vertex (#V), as described at feature_normals()
+    /// Per vertex (#V): how far (degrees) the linear fit moved eq. 5.1's normal: zero on planes,
+    /// a few degrees on curved features. The split keeps that much margin when it checks that
+    /// pieces face the way of their surface.
+    std::vector<float> fit_correction_deg;
+};
+
 /// Per vertex (#V): at each vertex of an edge or corner triangle, N = sum(theta_i N_i) / sum(theta_i) over
 /// the incident faces of the vertex's own feature patch (eq. 5.1), normalised; theta_i is the
 /// face's angle at the vertex. Faces whose three vertices all lie on that patch are preferred:
@@ -35,7 +43,7 @@ struct FeatureNormalOptions {
 /// normals. Zero at vertices off the bands, without a patch, or where nothing can tell. With
 /// NormalEstimate::LinearFit the eq. 5.1 normal is then refined by the fit where it is well
 /// posed.
-std::vector<Vec3> feature_normals(const Mesh& mesh, const Connectivity& connectivity,
+FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivity,
                                   const std::vector<Vec3>& face_normals,
                                   const std::vector<Index>& face_patch,
                                   const std::vector<Index>& vertex_patch,

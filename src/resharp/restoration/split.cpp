@@ -1,6 +1,8 @@
 #include "resharp/restoration/split.h"
 
 #include <array>
+#include <cmath>
+#include <numbers>
 
 #include "resharp/mesh/geometry.h"
 
@@ -111,11 +113,21 @@ void emit_pieces(const Mesh& mesh, const SharpPoints& p, const SplitVertices& id
 constexpr double kCollapsedAreaRatio = 1e-12;
 
 /// The normal a piece at an input vertex must agree with: the vertex's feature normal, or its
-/// plain vertex normal where it has none (a vertex whose faces all lie in bands).
+/// plain vertex normal where it has none (a vertex whose faces all lie in bands). The plain
+/// normal of such a vertex leans towards the band by up to half the edge's angle, so a piece
+/// must face within 60 degrees of it.
+/// A feature normal is trusted to within its fit correction: on a curved feature the estimate
+/// is that much off, and a piece standing almost on edge to it may lean past the true surface,
+/// so the piece must face within 90 degrees less that correction. On planes it is zero.
 struct ReferenceNormals {
-    const std::vector<Vec3>& feature;
+    const FeatureNormals& feature;
     const std::vector<Vec3>& vertex;
-    const Vec3& at(Index v) const { return feature[v].isZero(0.0) ? vertex[v] : feature[v]; }
+    /// The reference normal at v, and the smallest cosine a piece's normal may make with it.
+    std::pair<const Vec3&, double> at(Index v) const {
+        if (feature.normal[v].isZero(0.0)) return {vertex[v], 0.5};
+        const double margin = std::min<double>(feature.fit_correction_deg[v], 30.0);
+        return {feature.normal[v], std::sin(margin * std::numbers::pi / 180.0)};
+    }
 };
 
 /// A piece is sound when it has area and turns the way of the surface it lies on: the reference
@@ -138,9 +150,11 @@ bool pieces_are_sound(const Mesh& mesh, const std::vector<Vec3>& face_normals,
         if (n.norm() <= kCollapsedAreaRatio * scale) sound = false;
         bool has_reference = false;
         for (Index v : {a, b, c}) {
-            if (!ids.is_original(v) || reference.at(v).isZero(0.0)) continue;
+            if (!ids.is_original(v)) continue;
+            const auto [normal, min_cosine] = reference.at(v);
+            if (normal.isZero(0.0)) continue;
             has_reference = true;
-            if (n.dot(reference.at(v)) <= 0.0) sound = false;
+            if (n.dot(normal) <= min_cosine * n.norm()) sound = false;
         }
         if (!has_reference && n.dot(face_normals[f]) <= 0.0) sound = false;
     });
@@ -271,7 +285,7 @@ std::vector<Index> number_surviving_points(const SharpPoints& p, Index first) {
 
 Mesh split_band_triangles(const Mesh& mesh, const Connectivity& connectivity,
                           const std::vector<Vec3>& face_normals,
-                          const std::vector<Vec3>& feature_normals,
+                          const FeatureNormals& feature_normals,
                           const std::vector<Vec3>& vertex_normals, SharpPoints& points,
                           SplitReport& report, std::vector<Index>& source_face) {
     const SplitVertices ids(mesh, points);

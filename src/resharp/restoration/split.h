@@ -8,6 +8,7 @@
 
 #include "resharp/mesh/connectivity.h"
 #include "resharp/mesh/mesh.h"
+#include "resharp/restoration/feature_normals.h"
 #include "resharp/restoration/sharp_points.h"
 
 namespace resharp {
@@ -19,8 +20,9 @@ struct SplitReport {
     std::size_t output_faces = 0;
 };
 
-/// Takes the mesh, its connectivity, unit face normals (#F), feature normals (#V), plain vertex
-/// normals (#V, used where a vertex has no feature normal) and the points of
+/// Takes the mesh, its connectivity, unit face normals (#F), feature normals with their fit
+/// corrections (#V), plain vertex normals (#V, used where a vertex has no feature normal) and
+/// the points of
 /// place_sharp_points. First drops, repeatedly, points of faces whose pieces would collapse or
 /// turn against the surface they lie on, so that no output triangle is flipped; dropped points are removed from `points` (set to kNoIndex). Then builds the output:
 /// the input vertices first, unchanged and in order, then the surviving points in `points`
@@ -28,7 +30,7 @@ struct SplitReport {
 /// `source_face` receives, per output face, the input face it came from.
 Mesh split_band_triangles(const Mesh& mesh, const Connectivity& connectivity,
                           const std::vector<Vec3>& face_normals,
-                          const std::vector<Vec3>& feature_normals,
+                          const FeatureNormals& feature_normals,
                           const std::vector<Vec3>& vertex_normals, SharpPoints& points,
                           SplitReport& report, std::vector<Index>& source_face);
 
