@@ -5,38 +5,15 @@
 
 #include <benchmark/benchmark.h>
 
-#include <cstdlib>
-#include <map>
-#include <memory>
 #include <string>
 
-#include "resharp/sim/job.h"
-#include "resharp/sim/marching_cubes.h"
-#include "resharp/sim/simulate.h"
+#include "parts.h"
 
 namespace {
 
 using namespace resharp::sim;
-
-struct Part {
-    Job job;
-    ToolPath path;
-    SimulationOptions options;
-};
-
-const Part& part(const std::string& name) {
-    static std::map<std::string, std::unique_ptr<Part>> parts;
-    auto& slot = parts[name];
-    if (!slot) {
-        const char* root = std::getenv("RESHARP_EXAMPLES");
-        const std::string folder = std::string(root ? root : "examples") + "/" + name;
-        slot = std::make_unique<Part>();
-        slot->job = read_job(folder + "/job.json");
-        slot->path = read_gcode(slot->job.program, {.start_position = slot->job.start_position});
-        slot->options.pitch = slot->job.pitch;
-    }
-    return *slot;
-}
+using resharp::bench::Part;
+using resharp::bench::part;
 
 void BM_Simulate(benchmark::State& state, const std::string& name) {
     const Part& p = part(name);

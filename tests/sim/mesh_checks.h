@@ -6,6 +6,7 @@
 #include "resharp/mesh/connectivity.h"
 #include "resharp/mesh/diagnostics.h"
 #include "resharp/mesh/mesh.h"
+#include "support/invariants.h"
 
 namespace resharp::test {
 
@@ -21,14 +22,8 @@ inline double signed_volume(const Mesh& mesh) {
 /// Closed, manifold, consistently oriented, outward, no degenerate or duplicate faces.
 inline void expect_clean_closed_outward(const Mesh& mesh) {
     ASSERT_GT(mesh.face_count(), 0u);
-    const MeshDiagnostics d = diagnose(mesh, build_connectivity(mesh));
-    EXPECT_EQ(d.boundary_edges, 0u);
-    EXPECT_EQ(d.nonmanifold_edges, 0u);
-    EXPECT_EQ(d.inconsistent_edges, 0u);
-    EXPECT_EQ(d.nonmanifold_vertices, 0u);
-    EXPECT_EQ(d.degenerate_faces, 0u);
-    EXPECT_EQ(d.duplicate_faces, 0u);
-    EXPECT_EQ(d.isolated_vertices, 0u);
+    expect_closed_manifold(mesh);
+    EXPECT_EQ(diagnose(mesh, build_connectivity(mesh)).isolated_vertices, 0u);
     EXPECT_GT(signed_volume(mesh), 0.0);
 }
 
