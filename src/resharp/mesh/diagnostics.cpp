@@ -84,6 +84,7 @@ MeshDiagnostics diagnose(const Mesh& mesh, const Connectivity& c) {
     MeshDiagnostics d;
     for (std::size_t h = 0; h < c.edge_kind.size(); ++h) {
         const Index hi = static_cast<Index>(h);
+        if (c.edge_kind[h] == EdgeKind::Manifold) continue;  // almost all: no lookup needed
         if (tail_vertex(mesh, hi) == head_vertex(mesh, hi)) continue;  // degenerate face's edge
         switch (c.edge_kind[h]) {
             case EdgeKind::Boundary: ++d.boundary_edges; break;
@@ -93,8 +94,7 @@ MeshDiagnostics diagnose(const Mesh& mesh, const Connectivity& c) {
         }
     }
 
-    const std::vector<bool> degenerate = find_degenerate_faces(mesh);
-    d.degenerate_faces = static_cast<std::size_t>(std::count(degenerate.begin(), degenerate.end(), true));
+    for (const bool is_degenerate : find_degenerate_faces(mesh)) d.degenerate_faces += is_degenerate;
 
     DisjointSets sets(mesh.vertex_count());
     for (std::size_t f = 0; f < mesh.face_count(); ++f) {
