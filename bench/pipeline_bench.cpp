@@ -37,7 +37,8 @@ struct Stages {
     FeatureSegmentation features =
         segment_features(mesh, connectivity, face_normals, edges.is_edge);
     BandClassification bands =
-        classify_bands(mesh, connectivity, face_normals, edges.is_edge, features.vertex_patch);
+        classify_bands(mesh, connectivity, face_normals, edges.is_edge, features.face_patch,
+                       features.vertex_patch);
     FeatureNormals normals = feature_normals(mesh, connectivity, face_normals,
                                              features.face_patch, features.vertex_patch, bands);
     SharpPoints points = place_sharp_points(mesh, connectivity, face_normals, bands, normals.normal);
@@ -105,7 +106,8 @@ void BM_FeatureSegmentation(benchmark::State& state, const std::string& name) {
 void BM_Restoration(benchmark::State& state, const std::string& name) {
     run_single_threaded(state, name, [](const Stages& s) {
         const BandClassification bands = classify_bands(s.mesh, s.connectivity, s.face_normals,
-                                                        s.edges.is_edge, s.features.vertex_patch);
+                                                        s.edges.is_edge, s.features.face_patch,
+                                                        s.features.vertex_patch);
         const auto normals = feature_normals(s.mesh, s.connectivity, s.face_normals,
                                              s.features.face_patch, s.features.vertex_patch, bands);
         SharpPoints points =

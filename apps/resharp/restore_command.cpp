@@ -71,6 +71,10 @@ void bind_options(CLI::App& command, RestoreOptions& o) {
                        "touching patches whose normals differ less (degrees) along their border "
                        "are merged")
         ->capture_default_str();
+    command.add_option("--unconfirmed-border-angle", o.bands.unconfirmed_border_angle_deg,
+                       "a patch border without edge vertices is a sharp edge when the patches' "
+                       "normals differ more (degrees); 180 is the paper's rule")
+        ->capture_default_str();
     command.add_option("--spike-angle", o.points.spike_angle_deg,
                        "corner points are refused when normals around the corner differ more "
                        "(degrees, paper 5.3)")

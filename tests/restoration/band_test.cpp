@@ -24,7 +24,7 @@ Classified classify(const Mesh& mesh) {
     const EdgeSegmentation edges = segment_edges(mesh, c.connectivity, k, c.face_normals);
     c.features = segment_features(mesh, c.connectivity, c.face_normals, edges.is_edge);
     c.bands = classify_bands(mesh, c.connectivity, c.face_normals, edges.is_edge,
-                             c.features.vertex_patch);
+                             c.features.face_patch, c.features.vertex_patch);
     return c;
 }
 
@@ -64,6 +64,27 @@ TEST(FeatureNormals, BandVerticesOfABoxGetTheirFacesExactNormal) {
         }
     }
     EXPECT_GT(checked, 300u);
+}
+
+}  // namespace
+}  // namespace resharp
+
+namespace resharp {
+namespace {
+
+TEST(BandClassification, SharpBordersCountWithoutEdgeVerticesUnlessThePaperRuleIsAsked) {
+    const test::SampledShape shape = test::sampled_box();
+    const Classified c = classify(shape.mesh);
+    const std::vector<std::uint8_t> no_edge_vertices(shape.mesh.vertex_count(), 0);
+    const BandClassification by_angle =
+        classify_bands(shape.mesh, c.connectivity, c.face_normals, no_edge_vertices,
+                       c.features.face_patch, c.features.vertex_patch);
+    EXPECT_EQ(by_angle.crossing_edges, c.bands.crossing_edges);  // right angles: all confirmed
+    const BandClassification paper =
+        classify_bands(shape.mesh, c.connectivity, c.face_normals, no_edge_vertices,
+                       c.features.face_patch, c.features.vertex_patch,
+                       {.unconfirmed_border_angle_deg = 180.0});
+    EXPECT_EQ(paper.crossing_edges, 0u);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <span>
 
+#include "resharp/restoration/band_classification.h"
 #include "resharp/restoration/feature_normals.h"
 #include "resharp/restoration/sharp_points.h"
 #include "resharp/segmentation/edge_segmentation.h"
@@ -14,6 +15,7 @@ namespace resharp {
 struct RestoreOptions {
     EdgeSegmentationOptions edges;        ///< paper §3: eps_K, P, flatness
     FeatureSegmentationOptions features;  ///< paper §4: eps_theta, tiny patch size, merging
+    ClassificationOptions bands;          ///< paper §4 (end): which borders are sharp edges
     FeatureNormalOptions normals;         ///< paper §5.1: eq. 5.1 or a linear fit
     SharpPointOptions points;             ///< paper §5.3: spike angle
     /// Worker threads; 0 means all cores. The output does not depend on it.

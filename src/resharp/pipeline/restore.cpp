@@ -86,7 +86,7 @@ public:
         BandClassification bands;
         timed(Stage::Classification, [&] {
             bands = classify_bands(mesh_, connectivity, face_normals, edges.is_edge,
-                                   features.vertex_patch);
+                                   features.face_patch, features.vertex_patch, options_.bands);
         });
         if (options_.keep_segmentation) keep(edges, features, bands);
         report_.crossing_edges = bands.crossing_edges;

@@ -1,11 +1,39 @@
 #include "resharp/restoration/band_classification.h"
 
+#include <cmath>
+#include <numbers>
+
 namespace resharp {
+
+namespace {
+
+/// Mean normal of v's faces on its own patch (zero if it has none).
+Vec3 own_patch_normal(const Connectivity& c, const std::vector<Vec3>& face_normals,
+                      const std::vector<Index>& face_patch, Index patch, Index v) {
+    Vec3 sum = Vec3::Zero();
+    for (Index f : c.faces_around(v)) {
+        if (face_patch[f] == patch) sum += face_normals[f];
+    }
+    const double length = sum.norm();
+    return length > 0.0 ? Vec3(sum / length) : Vec3::Zero();
+}
+
+}  // namespace
 
 BandClassification classify_bands(const Mesh& mesh, const Connectivity& connectivity,
                                   const std::vector<Vec3>& face_normals,
                                   const std::vector<std::uint8_t>& is_edge_vertex,
-                                  const std::vector<Index>& vertex_patch) {
+                                  const std::vector<Index>& face_patch,
+                                  const std::vector<Index>& vertex_patch,
+                                  const ClassificationOptions& options) {
+    const double max_cosine =
+        std::cos(options.unconfirmed_border_angle_deg * std::numbers::pi / 180.0);
+    // Without an edge vertex, a border is confirmed by the angle between the two patches.
+    auto sharp_without_edge_vertex = [&](Index u, Index v) {
+        const Vec3 nu = own_patch_normal(connectivity, face_normals, face_patch, vertex_patch[u], u);
+        const Vec3 nv = own_patch_normal(connectivity, face_normals, face_patch, vertex_patch[v], v);
+        return !nu.isZero(0.0) && !nv.isZero(0.0) && nu.dot(nv) < max_cosine;
+    };
     BandClassification b;
     const std::size_t nh = connectivity.twin.size();
     b.is_crossing.assign(nh, 0);
@@ -22,7 +50,10 @@ BandClassification classify_bands(const Mesh& mesh, const Connectivity& connecti
             // The edge-based labels confirm the border: region growing alone also splits smooth
             // surfaces, whose border vertices have low curvature. Degenerate faces stay as they
             // are. Labels are checked first: they rule out almost every edge, and cheaply.
-            if (different_features && (is_edge_vertex[u] || is_edge_vertex[v]) &&
+            const bool confirmed = different_features &&
+                                   (is_edge_vertex[u] || is_edge_vertex[v] ||
+                                    sharp_without_edge_vertex(u, v));
+            if (confirmed &&
                 !face_normals[f].isZero(0.0) && !face_normals[face_of(twin)].isZero(0.0)) {
                 b.is_crossing[h] = b.is_crossing[twin] = 1;
                 ++b.crossing_edges;

@@ -26,13 +26,24 @@ struct BandClassification {
     std::size_t corner_triangles = 0;  ///< faces with role Corner
 };
 
+struct ClassificationOptions {
+    /// A border between two feature patches where neither vertex is an edge vertex still
+    /// crosses a sharp edge when the two patches' normals there differ by more than this
+    /// (degrees). Shallow transitions (a ball-end surface running into a flat face) bend too
+    /// gently for the curvature clustering of §3 but are sharp edges all the same. 180 turns it
+    /// off: the paper's combination, where only edge vertices confirm a border.
+    double unconfirmed_border_angle_deg = 30.0;
+};
+
 /// Takes the connectivity, unit face normals (#F), the edge-vertex labels of segment_edges (#V)
-/// and the vertex patches of segment_features (#V). Only manifold edges between two
-/// non-degenerate faces can cross: boundary, non-manifold and degenerate parts are left as they
-/// are.
+/// and the face and vertex patches of segment_features (#F, #V). Only manifold edges between
+/// two non-degenerate faces can cross: boundary, non-manifold and degenerate parts are left as
+/// they are.
 BandClassification classify_bands(const Mesh& mesh, const Connectivity& connectivity,
                                   const std::vector<Vec3>& face_normals,
                                   const std::vector<std::uint8_t>& is_edge_vertex,
-                                  const std::vector<Index>& vertex_patch);
+                                  const std::vector<Index>& face_patch,
+                                  const std::vector<Index>& vertex_patch,
+                                  const ClassificationOptions& options = {});
 
 }  // namespace resharp
