@@ -3,6 +3,7 @@
 /// Shared by the library test (tests/io) and the CLI test (tests/cli).
 
 #include <filesystem>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,9 @@ struct BadFileExpectation {
     std::string location;  ///< "line N", "byte N", or "-"
     std::string reason;    ///< a substring of the message
 };
+
+/// Names the case in test output (instead of GoogleTest's byte dump of the struct).
+inline void PrintTo(const BadFileExpectation& e, std::ostream* out) { *out << e.file; }
 
 /// tests/data/bad/
 std::filesystem::path bad_files_dir();
