@@ -3,8 +3,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <unordered_map>
 
+#include "resharp/eval/uniform_grid.h"
 #include "resharp/mesh/connectivity.h"
 #include "resharp/restoration/sharp_points.h"
 
@@ -53,33 +53,14 @@ std::vector<IdealPoint> find_ideal_points(const Mesh& mesh, const Oracle& oracle
 
 std::vector<double> nearest_distances(std::span<const IdealPoint> ideal,
                                       std::span<const Vec3> candidates, double search_radius) {
-    struct CellHash {
-        std::size_t operator()(const Eigen::Vector3i& k) const {
-            return (static_cast<std::size_t>(k.x()) * 73856093u) ^
-                   (static_cast<std::size_t>(k.y()) * 19349663u) ^
-                   (static_cast<std::size_t>(k.z()) * 83492791u);
-        }
-    };
-    auto cell_of = [&](const Vec3& p) {
-        return Eigen::Vector3i((p / search_radius).array().floor().cast<int>());
-    };
-    std::unordered_map<Eigen::Vector3i, std::vector<Index>, CellHash> grid;
-    for (std::size_t i = 0; i < candidates.size(); ++i) {
-        grid[cell_of(candidates[i])].push_back(static_cast<Index>(i));
-    }
-    std::vector<double> distance(ideal.size(), std::numeric_limits<double>::infinity());
+    const detail::UniformGrid grid(
+        candidates.size(),
+        [&](std::size_t i) { return detail::Box3(candidates[i], candidates[i]); }, search_radius);
+    std::vector<double> distance(ideal.size());
     for (std::size_t i = 0; i < ideal.size(); ++i) {
-        const Eigen::Vector3i home = cell_of(ideal[i].position);
-        for (int dx = -1; dx <= 1; ++dx)
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dz = -1; dz <= 1; ++dz) {
-                    const auto it = grid.find(home + Eigen::Vector3i(dx, dy, dz));
-                    if (it == grid.end()) continue;
-                    for (Index j : it->second) {
-                        const double d = (candidates[j] - ideal[i].position).norm();
-                        if (d <= search_radius && d < distance[i]) distance[i] = d;
-                    }
-                }
+        const Vec3& p = ideal[i].position;
+        const double d = grid.nearest(p, [&](Index j) { return (candidates[j] - p).norm(); }).second;
+        distance[i] = d <= search_radius ? d : std::numeric_limits<double>::infinity();
     }
     return distance;
 }

@@ -44,7 +44,7 @@ std::vector<IdealPoint> find_ideal_points(const Mesh& mesh, const Oracle& oracle
                                           const IdealPointOptions& options = {});
 
 /// For each ideal point, the distance to the nearest of `candidates` (infinity if none within
-/// `search_radius`). A uniform grid with cells of search_radius keeps it linear in size.
+/// `search_radius`), found through a uniform grid with cells of search_radius.
 std::vector<double> nearest_distances(std::span<const IdealPoint> ideal,
                                       std::span<const Vec3> candidates, double search_radius);
 

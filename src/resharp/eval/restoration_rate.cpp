@@ -57,8 +57,7 @@ RestorationScore score_restoration(const Mesh& input, const Mesh& output,
     s.new_vertices = fresh.size();
 
     // Ideal points to new vertices: the rate.
-    const UniformGrid fresh_grid = grid_over(fresh, h);
-    s.ideal_distance.resize(ideal.size());
+    s.ideal_distance = nearest_distances(ideal, fresh, 4.0 * h);
     std::vector<Vec3> counted;  // ideal points off the boundary, for false insertions
     for (std::size_t i = 0; i < ideal.size(); ++i) {
         const IdealPoint& p = ideal[i];
@@ -67,9 +66,7 @@ RestorationScore score_restoration(const Mesh& input, const Mesh& output,
             continue;
         }
         counted.push_back(p.position);
-        const double d = nearest_distance(fresh_grid, fresh, p.position);
-        s.ideal_distance[i] = d <= 4.0 * h ? d : std::numeric_limits<double>::infinity();
-        const bool restored = d <= tau;
+        const bool restored = s.ideal_distance[i] <= tau;
         if (p.kind == IdealKind::Edge) {
             ++s.ideal_edges;
             s.restored_edges += restored;

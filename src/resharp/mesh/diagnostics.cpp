@@ -37,18 +37,12 @@ bool is_duplicate_of_earlier(const Mesh& mesh, const Connectivity& c, Index f) {
     return false;
 }
 
-/// The half-edge of face f that starts at v.
-Index outgoing(const Mesh& mesh, Index f, Index v) {
-    const Triangle& t = mesh.triangles[f];
-    return 3 * f + (t[0] == v ? 0 : t[1] == v ? 1 : 2);
-}
-
 /// A vertex is manifold when its faces form one fan: turning around it from one face across
 /// manifold edges, forwards and then backwards, reaches every face of its ring.
 bool is_nonmanifold_vertex(const Mesh& mesh, const Connectivity& c, Index v) {
     const auto ring = c.faces_around(v);
     if (ring.size() < 2) return false;
-    const Index first = outgoing(mesh, ring[0], v);
+    const Index first = 3 * ring[0] + corner_of(mesh.triangles[ring[0]], v);  // leaves v
     std::size_t reached = 1;
     Index h = first;
     for (;;) {  // forwards: across the edge entering v

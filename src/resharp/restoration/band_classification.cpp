@@ -3,22 +3,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "resharp/segmentation/feature_segmentation.h"
+
 namespace resharp {
-
-namespace {
-
-/// Mean normal of v's faces on its own patch (zero if it has none).
-Vec3 own_patch_normal(const Connectivity& c, const std::vector<Vec3>& face_normals,
-                      const std::vector<Index>& face_patch, Index patch, Index v) {
-    Vec3 sum = Vec3::Zero();
-    for (Index f : c.faces_around(v)) {
-        if (face_patch[f] == patch) sum += face_normals[f];
-    }
-    const double length = sum.norm();
-    return length > 0.0 ? Vec3(sum / length) : Vec3::Zero();
-}
-
-}  // namespace
 
 BandClassification classify_bands(const Mesh& mesh, const Connectivity& connectivity,
                                   const std::vector<Vec3>& face_normals,
@@ -30,8 +17,10 @@ BandClassification classify_bands(const Mesh& mesh, const Connectivity& connecti
         std::cos(options.unconfirmed_border_angle_deg * std::numbers::pi / 180.0);
     // Without an edge vertex, a border is confirmed by the angle between the two patches.
     auto sharp_without_edge_vertex = [&](Index u, Index v) {
-        const Vec3 nu = own_patch_normal(connectivity, face_normals, face_patch, vertex_patch[u], u);
-        const Vec3 nv = own_patch_normal(connectivity, face_normals, face_patch, vertex_patch[v], v);
+        const Vec3 nu =
+            patch_mean_normal(mesh, connectivity, face_normals, face_patch, u, vertex_patch[u]);
+        const Vec3 nv =
+            patch_mean_normal(mesh, connectivity, face_normals, face_patch, v, vertex_patch[v]);
         return !nu.isZero(0.0) && !nv.isZero(0.0) && nu.dot(nv) < max_cosine;
     };
     BandClassification b;

@@ -217,22 +217,6 @@ std::size_t absorb_tiny(const Connectivity& c, const std::vector<Vec3>& normals,
     return absorbed;
 }
 
-/// Mean normal at v of its ring faces in patch p, leaving out faces that touch `away` (if
-/// given). Unweighted: these normals only vote (merging, labels), where the faces of a grid mesh
-/// are alike enough, and skipping the corner angles keeps this off the profile.
-Vec3 patch_normal_at(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>& normals,
-                     const std::vector<Index>& face_patch, Index v, Index p,
-                     Index away = kNoIndex) {
-    Vec3 sum = Vec3::Zero();
-    for (Index f : c.faces_around(v)) {
-        const Triangle& t = mesh.triangles[f];
-        if (face_patch[f] != p || t[0] == away || t[1] == away || t[2] == away) continue;
-        sum += normals[f];
-    }
-    const double length = sum.norm();
-    return length > 0.0 ? Vec3(sum / length) : Vec3::Zero();
-}
-
 /// Greedy merging of over-segmented patches (§4, Fig. 5): every vertex shared by two patches
 /// votes the angle between the two patches' normals there (as its cosine); pairs are merged in
 /// order of increasing median angle while it stays below the merge angle.
@@ -245,9 +229,9 @@ std::size_t merge_patches(const Mesh& mesh, const Connectivity& c, const std::ve
         ring_patches(c, face_patch, v, patches);
         std::sort(patches.begin(), patches.end());
         for (std::size_t a = 0; a < patches.size(); ++a) {
-            const Vec3 na = patch_normal_at(mesh, c, normals, face_patch, v, patches[a]);
+            const Vec3 na = patch_mean_normal(mesh, c, normals, face_patch, v, patches[a]);
             for (std::size_t b = a + 1; b < patches.size(); ++b) {
-                const Vec3 nb = patch_normal_at(mesh, c, normals, face_patch, v, patches[b]);
+                const Vec3 nb = patch_mean_normal(mesh, c, normals, face_patch, v, patches[b]);
                 votes.emplace_back(patches[a], patches[b], -na.dot(nb));
             }
         }
@@ -328,7 +312,7 @@ double elevation_from_patch(const Mesh& mesh, const Connectivity& c,
     double best = std::numeric_limits<double>::infinity();
     for_each_ring_vertex(mesh, c, v, [&](Index q) {
         if (label[q] != p) return;
-        const Vec3 n = patch_normal_at(mesh, c, normals, face_patch, q, p, v);
+        const Vec3 n = patch_mean_normal(mesh, c, normals, face_patch, q, p, v);
         const Vec3 d = mesh.positions[v] - mesh.positions[q];
         if (n.isZero(0.0) || d.isZero(0.0)) return;
         best = std::min(best, std::abs(n.dot(d)) / d.norm());
@@ -392,6 +376,18 @@ std::vector<Index> refine_border_labels(const Mesh& mesh, const Connectivity& c,
 }
 
 }  // namespace
+
+Vec3 patch_mean_normal(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>& normals,
+                       const std::vector<Index>& face_patch, Index v, Index p, Index away) {
+    Vec3 sum = Vec3::Zero();
+    for (Index f : c.faces_around(v)) {
+        const Triangle& t = mesh.triangles[f];
+        if (face_patch[f] != p || t[0] == away || t[1] == away || t[2] == away) continue;
+        sum += normals[f];
+    }
+    const double length = sum.norm();
+    return length > 0.0 ? Vec3(sum / length) : Vec3::Zero();
+}
 
 FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& connectivity,
                                      const std::vector<Vec3>& face_normals,

@@ -42,6 +42,14 @@ struct FeatureSegmentation {
     std::size_t merges = 0;             ///< greedy merges of over-segmented patches
 };
 
+/// Mean of the unit normals of v's ring faces in patch p (face_patch, #F), leaving out faces that
+/// touch vertex `away` when one is given; normalised, zero if no face qualifies. Unweighted:
+/// these normals vote and compare patches, where the faces of a grid mesh are alike enough and
+/// skipping eq. 5.1's corner angles keeps them cheap.
+Vec3 patch_mean_normal(const Mesh& mesh, const Connectivity& connectivity,
+                       const std::vector<Vec3>& face_normals, const std::vector<Index>& face_patch,
+                       Index v, Index p, Index away = kNoIndex);
+
 /// Takes the mesh, its connectivity, unit face normals (#F; zero for degenerate faces, which
 /// never join a patch by growing) and the edge-vertex labels of segment_edges (#V).
 /// \throws InvalidInput if an option is out of range.
