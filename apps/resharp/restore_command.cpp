@@ -45,6 +45,10 @@ void bind_options(CLI::App& command, RestoreOptions& o) {
     command.add_option("--max-fit-correction", o.normals.max_fit_correction_deg,
                        "a fitted normal further than this (degrees) from eq. 5.1's is not used")
         ->capture_default_str();
+    command.add_option("--max-fit-residual", o.normals.max_fit_residual_deg,
+                       "faces whose normal is further than this (degrees) from the first fit, such "
+                       "as faces beyond a scallop cusp, are left out of the second; 180 keeps all")
+        ->capture_default_str();
     command.add_option("--kmeans-tolerance", o.edges.kmeans_tolerance,
                        "eps_K (paper eq. 3.2): k-means stops when centres move less (1/length)")
         ->capture_default_str();

@@ -1,5 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "resharp/core/errors.h"
 #include "resharp/mesh/geometry.h"
 #include "resharp/restoration/band_classification.h"
 #include "resharp/restoration/feature_normals.h"
@@ -85,6 +90,71 @@ TEST(BandClassification, SharpBordersCountWithoutEdgeVerticesUnlessThePaperRuleI
                        c.features.face_patch, c.features.vertex_patch,
                        {.unconfirmed_border_angle_deg = 180.0});
     EXPECT_EQ(paper.crossing_edges, 0u);
+}
+
+}  // namespace
+}  // namespace resharp
+
+namespace resharp {
+namespace {
+
+/// A 7 x 7 vertex grid of pitch 0.5 folded by 20 degrees along the column x = 1.5: a crease that
+/// region growing let into one patch. Every face and vertex lies on patch 0.
+struct FoldedSheet {
+    Mesh mesh;
+    Index centre = kNoIndex;  ///< the vertex at (1, 1.5), one column before the fold
+};
+
+FoldedSheet folded_sheet() {
+    const double pitch = 0.5, fold = 1.5, slope = std::tan(20.0 * std::numbers::pi / 180.0);
+    FoldedSheet sheet;
+    for (int j = 0; j < 7; ++j) {
+        for (int i = 0; i < 7; ++i) {
+            const double x = pitch * i;
+            sheet.mesh.positions.emplace_back(x, pitch * j, std::max(0.0, x - fold) * slope);
+        }
+    }
+    for (Index j = 0; j < 6; ++j) {
+        for (Index i = 0; i < 6; ++i) {
+            const Index a = 7 * j + i;
+            sheet.mesh.triangles.push_back({a, a + 1, a + 8});
+            sheet.mesh.triangles.push_back({a, a + 8, a + 7});
+        }
+    }
+    sheet.centre = 7 * 3 + 2;
+    return sheet;
+}
+
+TEST(FeatureNormals, FitLeavesOutFacesBeyondACreaseInsideThePatch) {
+    const FoldedSheet sheet = folded_sheet();
+    const Mesh& mesh = sheet.mesh;
+    const Connectivity connectivity = build_connectivity(mesh);
+    const std::vector<Index> face_patch(mesh.face_count(), 0), vertex_patch(mesh.vertex_count(), 0);
+    BandClassification bands;
+    bands.face_role.assign(mesh.face_count(), BandRole::None);
+    for (Index f : connectivity.faces_around(sheet.centre)) bands.face_role[f] = BandRole::Edge;
+    auto normal_at_centre = [&](double max_residual_deg) {
+        return feature_normals(mesh, connectivity, face_normals(mesh), face_patch, vertex_patch,
+                               bands, {.max_fit_residual_deg = max_residual_deg})
+            .normal[sheet.centre];
+    };
+    const Vec3 flat(0.0, 0.0, 1.0);
+    EXPECT_LT((normal_at_centre(1.4) - flat).norm(), 1e-9);
+    EXPECT_GT(angle_deg(normal_at_centre(180.0), flat), 1.0);  // every face kept: tilted
+}
+
+TEST(FeatureNormals, RejectsAnglesOutsideTheHalfTurn) {
+    const FoldedSheet sheet = folded_sheet();
+    const Connectivity connectivity = build_connectivity(sheet.mesh);
+    const std::vector<Index> patch_of_faces(sheet.mesh.face_count(), 0);
+    const std::vector<Index> patch_of_vertices(sheet.mesh.vertex_count(), 0);
+    const BandClassification bands{{}, std::vector<BandRole>(sheet.mesh.face_count()), 0, 0, 0};
+    for (double bad : {-1.0, 181.0, std::numeric_limits<double>::quiet_NaN()}) {
+        EXPECT_THROW(feature_normals(sheet.mesh, connectivity, face_normals(sheet.mesh),
+                                     patch_of_faces, patch_of_vertices, bands,
+                                     {.max_fit_residual_deg = bad}),
+                     InvalidInput);
+    }
 }
 
 }  // namespace

@@ -9,10 +9,20 @@
 #include <Eigen/Cholesky>
 #include <tbb/parallel_for.h>
 
+#include "resharp/core/errors.h"
 #include "resharp/mesh/geometry.h"
 
 namespace resharp {
 namespace {
+
+void validate(const FeatureNormalOptions& o) {
+    if (!(o.max_fit_correction_deg >= 0.0 && o.max_fit_correction_deg <= 180.0)) {
+        throw InvalidInput("largest fit correction must lie in [0, 180] degrees");
+    }
+    if (!(o.max_fit_residual_deg >= 0.0 && o.max_fit_residual_deg <= 180.0)) {
+        throw InvalidInput("largest fit residual must lie in [0, 180] degrees");
+    }
+}
 
 bool lies_on_patch(const Triangle& t, const std::vector<Index>& vertex_patch, Index patch) {
     return vertex_patch[t[0]] == patch && vertex_patch[t[1]] == patch &&
@@ -75,32 +85,69 @@ void fit_faces(const Mesh& mesh, const Connectivity& c, const std::vector<Index>
     });
 }
 
-/// Least-squares fit n(x) = n0 + a u + b w of the face normals over the faces' centroids, with
-/// (u, w) the centroid's offset from v in the tangent plane of `guess`; returns n0, the fitted
-/// normal at v, or nullopt when the centroids do not span the plane.
-std::optional<Vec3> fit_normal_at(const Mesh& mesh, const std::vector<Vec3>& normals,
-                                  std::span<const Index> faces, Index v, const Vec3& guess) {
-    if (faces.size() < 4) return std::nullopt;
+/// The linear model of fit_normal_at: per face the row (1, u, w) of its centroid's offset from
+/// the vertex in a tangent frame, beside the face's normal.
+struct FitSamples {
+    std::vector<Eigen::Vector3d> rows;
+    std::vector<Vec3> normals;
+    double largest_offset2 = 0.0;  ///< squared length of the longest centroid offset
+};
+
+FitSamples fit_samples(const Mesh& mesh, const std::vector<Vec3>& normals,
+                       std::span<const Index> faces, Index v, const Vec3& guess) {
     const Vec3 t1 = guess.unitOrthogonal();
     const Vec3 t2 = guess.cross(t1);
-    Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
-    Eigen::Matrix3d atb = Eigen::Matrix3d::Zero();  // rows: 1, u, w; columns: x, y, z
-    double scale = 0.0;
+    FitSamples samples;
     for (Index f : faces) {
         const Triangle& t = mesh.triangles[f];
         const Vec3 d = (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0 -
                        mesh.positions[v];
-        const Eigen::Vector3d row(1.0, d.dot(t1), d.dot(t2));
-        ata += row * row.transpose();
-        atb += row * normals[f].transpose();
-        scale = std::max(scale, d.squaredNorm());
+        samples.rows.emplace_back(1.0, d.dot(t1), d.dot(t2));
+        samples.normals.push_back(normals[f]);
+        samples.largest_offset2 = std::max(samples.largest_offset2, d.squaredNorm());
+    }
+    return samples;
+}
+
+/// Least squares over the samples with use[i] set: the 3x3 coefficients (rows: 1, u, w;
+/// columns: x, y, z), or nullopt when the used centroids do not span the plane.
+std::optional<Eigen::Matrix3d> solve_fit(const FitSamples& s, const std::vector<std::uint8_t>& use) {
+    Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+    Eigen::Matrix3d atb = Eigen::Matrix3d::Zero();
+    double count = 0.0;
+    for (std::size_t i = 0; i < s.rows.size(); ++i) {
+        if (!use[i]) continue;
+        ata += s.rows[i] * s.rows[i].transpose();
+        atb += s.rows[i] * s.normals[i].transpose();
+        count += 1.0;
     }
     // The determinant scales as count^3 * length^4; below this share of that bound the
     // centroids lie nearly on a line and the slope across it is a guess.
-    const double n = static_cast<double>(faces.size());
-    if (ata.determinant() < 1e-6 * n * n * n * scale * scale) return std::nullopt;
-    const Eigen::Matrix3d solution = ata.ldlt().solve(atb);
-    const Vec3 n0 = solution.row(0).transpose();
+    const double bound = count * count * count * s.largest_offset2 * s.largest_offset2;
+    if (count < 4.0 || ata.determinant() < 1e-6 * bound) return std::nullopt;
+    return Eigen::Matrix3d(ata.ldlt().solve(atb));
+}
+
+/// Least-squares fit n(x) = n0 + a u + b w of the face normals over the faces' centroids, with
+/// (u, w) the centroid's offset from v in the tangent plane of `guess`, refitted once without
+/// the faces whose residual exceeds `max_residual` (radians, as a chord of unit normals);
+/// returns n0, the fitted normal at v, or nullopt when the centroids do not span the plane.
+std::optional<Vec3> fit_normal_at(const Mesh& mesh, const std::vector<Vec3>& normals,
+                                  std::span<const Index> faces, Index v, const Vec3& guess,
+                                  double max_residual) {
+    const FitSamples samples = fit_samples(mesh, normals, faces, v, guess);
+    std::vector<std::uint8_t> use(faces.size(), 1);
+    std::optional<Eigen::Matrix3d> fit = solve_fit(samples, use);
+    if (!fit) return std::nullopt;
+    bool trimmed = false;
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+        const Vec3 predicted = fit->transpose() * samples.rows[i];
+        use[i] = (predicted - samples.normals[i]).norm() <= max_residual;
+        trimmed = trimmed || !use[i];
+    }
+    if (trimmed) fit = solve_fit(samples, use);
+    if (!fit) return std::nullopt;
+    const Vec3 n0 = fit->row(0).transpose();
     if (!n0.allFinite() || n0.isZero(0.0)) return std::nullopt;
     return Vec3(n0.normalized());
 }
@@ -113,7 +160,10 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
                                   const std::vector<Index>& vertex_patch,
                                   const BandClassification& bands,
                                   const FeatureNormalOptions& options) {
-    const double min_cosine = std::cos(options.max_fit_correction_deg * std::numbers::pi / 180.0);
+    validate(options);
+    const double degree = std::numbers::pi / 180.0;
+    const double min_cosine = std::cos(options.max_fit_correction_deg * degree);
+    const double max_residual = 2.0 * std::sin(options.max_fit_residual_deg * degree / 2.0);
     std::vector<std::uint8_t> needed(mesh.vertex_count(), 0);
     for (Index f = 0; f < mesh.face_count(); ++f) {
         if (bands.face_role[f] == BandRole::None) continue;
@@ -135,7 +185,7 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
                               if (options.estimate == NormalEstimate::LinearFit && !n.isZero(0.0)) {
                                   fit_faces(mesh, connectivity, face_patch, vertex_patch, v, faces);
                                   const auto fitted =
-                                      fit_normal_at(mesh, face_normals, faces, v, n);
+                                      fit_normal_at(mesh, face_normals, faces, v, n, max_residual);
                                   if (fitted && fitted->dot(n) > min_cosine) {
                                       result.fit_correction_deg[v] =
                                           static_cast<float>(angle_deg(*fitted, n));

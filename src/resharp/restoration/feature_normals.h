@@ -25,6 +25,12 @@ struct FeatureNormalOptions {
     /// A fitted normal further than this (degrees) from eq. 5.1's is not trusted; eq. 5.1's is
     /// used instead.
     double max_fit_correction_deg = 15.0;
+    /// Faces whose normal lies further than this (degrees) from the first fit are left out and
+    /// the fit is repeated once. The normals of one ball-end pass are linear in position (a
+    /// sphere's normal is (x - c) / r), so on a single pass the residuals are tiny; faces beyond
+    /// a scallop cusp that region growing let into the patch are not, and would tilt the fit.
+    /// 180 keeps every face.
+    double max_fit_residual_deg = 1.4;
 };
 
 struct FeatureNormals {
@@ -43,6 +49,7 @@ struct FeatureNormals {
 /// normals. Zero at vertices off the bands, without a patch, or where nothing can tell. With
 /// NormalEstimate::LinearFit the eq. 5.1 normal is then refined by the fit where it is well
 /// posed.
+/// \throws InvalidInput if an angle option lies outside [0, 180] degrees.
 FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivity,
                                   const std::vector<Vec3>& face_normals,
                                   const std::vector<Index>& face_patch,
