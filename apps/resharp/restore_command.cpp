@@ -75,9 +75,20 @@ void bind_options(CLI::App& command, RestoreOptions& o) {
                        "touching patches whose normals differ less (degrees) along their border "
                        "are merged")
         ->capture_default_str();
+    command.add_option("--curved-region-faces", o.features.curved_region_faces,
+                       "a region this large only grows into faces near its seed's normal, so "
+                       "growth cannot creep around a scallop cusp; 0 grows without limit (paper)")
+        ->capture_default_str();
+    command.add_flag("!--merge-over-sharp-borders", o.features.keep_sharp_borders_apart,
+                     "plain greedy merging (paper): may join patches through smooth borders even "
+                     "where they meet at a sharp border elsewhere");
     command.add_option("--unconfirmed-border-angle", o.bands.unconfirmed_border_angle_deg,
                        "a patch border without edge vertices is a sharp edge when the patches' "
                        "normals differ more (degrees); 180 is the paper's rule")
+        ->capture_default_str();
+    command.add_option("--smooth-border-angle", o.bands.smooth_border_angle_deg,
+                       "a patch border whose patches' normals differ less (degrees) is never a "
+                       "sharp edge, even with edge vertices; 0 is the paper's rule")
         ->capture_default_str();
     command.add_option("--spike-angle", o.points.spike_angle_deg,
                        "corner points are refused when normals around the corner differ more "

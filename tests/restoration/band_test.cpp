@@ -92,6 +92,33 @@ TEST(BandClassification, SharpBordersCountWithoutEdgeVerticesUnlessThePaperRuleI
     EXPECT_EQ(paper.crossing_edges, 0u);
 }
 
+TEST(BandClassification, SmoothBordersAreNoEdgesEvenWithEdgeVertices) {
+    const test::SampledShape shape = test::sampled_box();
+    const Classified c = classify(shape.mesh);
+    // Split the top face's patch in two at x = 5, as merging that was held back would leave it,
+    // and call every vertex an edge vertex.
+    const Index top = static_cast<Index>(c.features.patch_count);
+    std::vector<Index> face_patch = c.features.face_patch, vertex_patch = c.features.vertex_patch;
+    auto on_top_left = [&](Index v) {
+        return shape.surface_ids[v] == 5 && shape.mesh.positions[v].x() < 5.0;
+    };
+    for (Index v = 0; v < shape.mesh.vertex_count(); ++v) {
+        if (on_top_left(v)) vertex_patch[v] = top;
+    }
+    for (Index f = 0; f < shape.mesh.face_count(); ++f) {
+        const Triangle& t = shape.mesh.triangles[f];
+        if (on_top_left(t[0]) && on_top_left(t[1]) && on_top_left(t[2])) face_patch[f] = top;
+    }
+    const std::vector<std::uint8_t> all_edge(shape.mesh.vertex_count(), 1);
+    const BandClassification ours = classify_bands(shape.mesh, c.connectivity, c.face_normals,
+                                                   all_edge, face_patch, vertex_patch);
+    EXPECT_EQ(ours.crossing_edges, c.bands.crossing_edges);  // the box's edges, nothing more
+    const BandClassification paper =
+        classify_bands(shape.mesh, c.connectivity, c.face_normals, all_edge, face_patch,
+                       vertex_patch, {.smooth_border_angle_deg = 0.0});
+    EXPECT_GT(paper.crossing_edges, c.bands.crossing_edges + 10);  // the split across the top
+}
+
 }  // namespace
 }  // namespace resharp
 

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
+#include <numbers>
 #include <set>
 
 #include "resharp/mesh/geometry.h"
@@ -67,6 +69,42 @@ TEST(FeatureSegmentation, MergesTheHoleWallThatRegionGrowingSplits) {
     // Without merging the wall stays in pieces.
     const FeatureSegmentation unmerged = segment(shape.mesh, {.merge_angle_deg = 0.0});
     EXPECT_GT(unmerged.patch_count, shape.surfaces.size());
+}
+
+/// A sheet folded along x = 0.25 (off the grid lines, so band faces straddle it), its crease
+/// fading from 40 degrees at y = 0 to nothing at y = 30, like the cusp between two ball-end
+/// passes that flattens out: z = -tan(20 deg) (1 - y / 30) |x - 0.25| on a 0.5 grid.
+Mesh fading_crease() {
+    const double slope = std::tan(20.0 * std::numbers::pi / 180.0);
+    const Index columns = 41, rows = 61;
+    Mesh mesh;
+    for (Index j = 0; j < rows; ++j) {
+        for (Index i = 0; i < columns; ++i) {
+            const double x = -10.0 + 0.5 * i, y = 0.5 * j;
+            mesh.positions.emplace_back(x, y, -slope * (1.0 - y / 30.0) * std::abs(x - 0.25));
+        }
+    }
+    for (Index j = 0; j + 1 < rows; ++j) {
+        for (Index i = 0; i + 1 < columns; ++i) {
+            const Index a = columns * j + i;
+            mesh.triangles.push_back({a, a + 1, a + columns + 1});
+            mesh.triangles.push_back({a, a + columns + 1, a + columns});
+        }
+    }
+    return mesh;
+}
+
+TEST(FeatureSegmentation, KeepsTheSidesOfAFadingCreaseApart) {
+    const Mesh mesh = fading_crease();
+    const Index left = 41 * 2 + 18, right = 41 * 2 + 23;  // (-1, 1) and (1.5, 1): 40 degrees apart
+    const FeatureSegmentation ours = segment(mesh);
+    ASSERT_NE(ours.vertex_patch[left], kNoIndex);
+    ASSERT_NE(ours.vertex_patch[right], kNoIndex);
+    EXPECT_NE(ours.vertex_patch[left], ours.vertex_patch[right]);
+    // The paper's growth and merging join the two sides where the crease has faded.
+    const FeatureSegmentation paper =
+        segment(mesh, {.curved_region_faces = 0, .keep_sharp_borders_apart = false});
+    EXPECT_EQ(paper.vertex_patch[left], paper.vertex_patch[right]);
 }
 
 }  // namespace

@@ -15,13 +15,18 @@ BandClassification classify_bands(const Mesh& mesh, const Connectivity& connecti
                                   const ClassificationOptions& options) {
     const double max_cosine =
         std::cos(options.unconfirmed_border_angle_deg * std::numbers::pi / 180.0);
-    // Without an edge vertex, a border is confirmed by the angle between the two patches.
-    auto sharp_without_edge_vertex = [&](Index u, Index v) {
+    const double smooth_cosine =
+        std::cos(options.smooth_border_angle_deg * std::numbers::pi / 180.0);
+    // Edge vertices confirm a border unless the two patches' normals there are closer than the
+    // smooth angle; without an edge vertex the normals must differ by the unconfirmed angle.
+    auto border_is_sharp = [&](Index u, Index v) {
+        const bool edge_vertex = is_edge_vertex[u] || is_edge_vertex[v];
         const Vec3 nu =
             patch_mean_normal(mesh, connectivity, face_normals, face_patch, u, vertex_patch[u]);
         const Vec3 nv =
             patch_mean_normal(mesh, connectivity, face_normals, face_patch, v, vertex_patch[v]);
-        return !nu.isZero(0.0) && !nv.isZero(0.0) && nu.dot(nv) < max_cosine;
+        if (nu.isZero(0.0) || nv.isZero(0.0)) return edge_vertex;
+        return edge_vertex ? nu.dot(nv) <= smooth_cosine : nu.dot(nv) < max_cosine;
     };
     BandClassification b;
     const std::size_t nh = connectivity.twin.size();
@@ -39,9 +44,7 @@ BandClassification classify_bands(const Mesh& mesh, const Connectivity& connecti
             // The edge-based labels confirm the border: region growing alone also splits smooth
             // surfaces, whose border vertices have low curvature. Degenerate faces stay as they
             // are. Labels are checked first: they rule out almost every edge, and cheaply.
-            const bool confirmed = different_features &&
-                                   (is_edge_vertex[u] || is_edge_vertex[v] ||
-                                    sharp_without_edge_vertex(u, v));
+            const bool confirmed = different_features && border_is_sharp(u, v);
             if (confirmed &&
                 !face_normals[f].isZero(0.0) && !face_normals[face_of(twin)].isZero(0.0)) {
                 b.is_crossing[h] = b.is_crossing[twin] = 1;

@@ -32,7 +32,16 @@ struct ClassificationOptions {
     /// (degrees). Shallow transitions (a ball-end surface running into a flat face) bend too
     /// gently for the curvature clustering of §3 but are sharp edges all the same. 180 turns it
     /// off: the paper's combination, where only edge vertices confirm a border.
-    double unconfirmed_border_angle_deg = 30.0;
+    /// 20 degrees lets the cusps between neighbouring ball-end passes count (their exact
+    /// normals part by 30 degrees and more, the mean face normals on either side by less); smooth
+    /// borders that merging left, between patches kept apart elsewhere, stay well below it.
+    double unconfirmed_border_angle_deg = 20.0;
+    /// A border whose patches' normals differ by less than this (degrees) is never a sharp
+    /// edge, edge vertices or not. Merging joins borders this smooth, so only patches it kept
+    /// apart (FeatureSegmentationOptions::keep_sharp_borders_apart) leave them, and the
+    /// curvature of a ball-end surface can flag their vertices as edge vertices. 0 is the
+    /// paper's rule.
+    double smooth_border_angle_deg = 15.0;
 };
 
 /// Takes the connectivity, unit face normals (#F), the edge-vertex labels of segment_edges (#V)

@@ -28,9 +28,13 @@ void validate(const FeatureSegmentationOptions& o) {
 }
 
 /// §4 steps 1-3: breadth-first growth across manifold edges while neighbouring face normals
-/// differ by less than the angle. Seeds are taken in face order, so ids are deterministic.
+/// differ by less than the angle. A region holding `curved_limit` faces (0: no limit) only
+/// takes faces within the angle of its seed (FeatureSegmentationOptions::curved_region_faces).
+/// The queue keeps every face of the region, so its size is the region's. Seeds are taken in
+/// face order, so ids are deterministic.
 std::vector<Index> grow_regions(const Connectivity& c, const std::vector<Vec3>& normals,
-                                double max_angle_deg, std::size_t& region_count) {
+                                double max_angle_deg, std::size_t curved_limit,
+                                std::size_t& region_count) {
     const double min_cosine = std::cos(max_angle_deg * kDegree);
     std::vector<Index> region(normals.size(), kNoIndex);
     std::vector<Index> queue;
@@ -45,10 +49,11 @@ std::vector<Index> grow_regions(const Connectivity& c, const std::vector<Vec3>& 
                 const Index twin = c.twin[3 * u + k];
                 if (twin == kNoIndex) continue;
                 const Index v = face_of(twin);
-                if (region[v] == kNoIndex && normals[u].dot(normals[v]) > min_cosine) {
-                    region[v] = next;
-                    queue.push_back(v);
-                }
+                if (region[v] != kNoIndex || normals[u].dot(normals[v]) <= min_cosine) continue;
+                const bool limited = curved_limit != 0 && queue.size() >= curved_limit;
+                if (limited && normals[seed].dot(normals[v]) <= min_cosine) continue;
+                region[v] = next;
+                queue.push_back(v);
             }
         }
         ++next;
@@ -217,11 +222,51 @@ std::size_t absorb_tiny(const Connectivity& c, const std::vector<Vec3>& normals,
     return absorbed;
 }
 
+/// Border of two patches: (median -cosine of the angle between them, lower id, higher id).
+using Border = std::tuple<double, Index, Index>;
+
+/// Unites the patches of `borders` (sorted by ascending angle) while the angle stays below the
+/// one whose -cosine is `sharp`. With keep_apart, borders at or above it are sharp, and two sets
+/// are not united when a patch of one has a sharp border with a patch of the other: each set
+/// keeps the patches it is sharp against, and the shorter of the two lists is checked.
+std::size_t unite_smooth_borders(const std::vector<Border>& borders, double sharp, bool keep_apart,
+                                 std::size_t patch_count, DisjointSets& sets) {
+    std::vector<std::vector<Index>> sharp_against(keep_apart ? patch_count : 0);
+    if (keep_apart) {
+        for (const auto& [negative_cosine, a, b] : borders) {
+            if (negative_cosine < sharp) continue;
+            sharp_against[a].push_back(b);
+            sharp_against[b].push_back(a);
+        }
+    }
+    auto kept_apart = [&](Index root_a, Index root_b) {
+        if (!keep_apart) return false;
+        if (sharp_against[root_a].size() > sharp_against[root_b].size()) std::swap(root_a, root_b);
+        return std::any_of(sharp_against[root_a].begin(), sharp_against[root_a].end(),
+                           [&](Index p) { return sets.find(p) == root_b; });
+    };
+    std::size_t merges = 0;
+    for (const auto& [negative_cosine, a, b] : borders) {
+        if (negative_cosine >= sharp) break;
+        const Index root_a = sets.find(a), root_b = sets.find(b);
+        if (root_a == root_b || kept_apart(root_a, root_b)) continue;
+        sets.unite(root_a, root_b);
+        ++merges;
+        if (!keep_apart) continue;
+        const Index root = sets.find(root_a), absorbed = root == root_a ? root_b : root_a;
+        auto& into = sharp_against[root];
+        into.insert(into.end(), sharp_against[absorbed].begin(), sharp_against[absorbed].end());
+        sharp_against[absorbed] = {};
+    }
+    return merges;
+}
+
 /// Greedy merging of over-segmented patches (§4, Fig. 5): every vertex shared by two patches
 /// votes the angle between the two patches' normals there (as its cosine); pairs are merged in
-/// order of increasing median angle while it stays below the merge angle.
+/// order of increasing median angle while it stays below the merge angle, keeping patches with
+/// a sharp border apart if asked (unite_smooth_borders).
 std::size_t merge_patches(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>& normals,
-                          double merge_angle_deg, std::vector<Index>& face_patch,
+                          double merge_angle_deg, bool keep_apart, std::vector<Index>& face_patch,
                           std::size_t patch_count) {
     std::vector<std::tuple<Index, Index, double>> votes;  // (a, b, -cosine): ascending = angle
     std::vector<Index> patches;
@@ -237,7 +282,7 @@ std::size_t merge_patches(const Mesh& mesh, const Connectivity& c, const std::ve
         }
     }
     std::sort(votes.begin(), votes.end());
-    std::vector<std::tuple<double, Index, Index>> pairs;  // (median -cosine, a, b)
+    std::vector<Border> pairs;
     for (std::size_t i = 0; i < votes.size();) {
         std::size_t j = i;
         while (j < votes.size() && std::get<0>(votes[j]) == std::get<0>(votes[i]) &&
@@ -250,12 +295,9 @@ std::size_t merge_patches(const Mesh& mesh, const Connectivity& c, const std::ve
     }
     std::sort(pairs.begin(), pairs.end());
     DisjointSets sets(patch_count);
-    std::size_t merges = 0;
-    const double largest = -std::cos(merge_angle_deg * kDegree);
-    for (const auto& [negative_cosine, a, b] : pairs) {
-        if (negative_cosine >= largest) break;
-        merges += sets.unite(a, b);
-    }
+    const std::size_t merges =
+        unite_smooth_borders(pairs, -std::cos(merge_angle_deg * kDegree), keep_apart,
+                             patch_count, sets);
     for (Index& p : face_patch) {
         if (p != kNoIndex) p = sets.find(p);
     }
@@ -396,7 +438,8 @@ FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& conne
     validate(options);
     FeatureSegmentation s;
     std::vector<Index> region =
-        grow_regions(connectivity, face_normals, options.max_normal_angle_deg, s.grown_patches);
+        grow_regions(connectivity, face_normals, options.max_normal_angle_deg,
+                     options.curved_region_faces, s.grown_patches);
     const PatchCensus census =
         take_census(mesh, connectivity, region, s.grown_patches, is_edge_vertex);
     std::vector<PatchRole> role = assign_roles(census, options);
@@ -407,7 +450,8 @@ FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& conne
     for (Index& r : region) {
         if (role[r] == PatchRole::Band) r = kNoIndex;
     }
-    s.merges = merge_patches(mesh, connectivity, face_normals, options.merge_angle_deg, region,
+    s.merges = merge_patches(mesh, connectivity, face_normals, options.merge_angle_deg,
+                             options.keep_sharp_borders_apart, region,
                              s.grown_patches);
     s.patch_count = compact_ids(region, s.grown_patches);
     s.face_patch = std::move(region);

@@ -26,6 +26,18 @@ struct FeatureSegmentationOptions {
     /// vertices they share, differ by less than this (degrees, median over the border) are one
     /// surface that region growing split.
     double merge_angle_deg = 15.0;
+    /// Growth of a curved region (§4 step 2, our addition): once a region holds this many
+    /// faces it only takes faces whose normal is still within eps_theta of its seed's. Growth
+    /// from neighbour to neighbour creeps along a scallop cusp to where the cusp flattens out
+    /// and so joins two ball-end passes that meet at a sharp cusp elsewhere; keeping curved
+    /// regions small keeps them on one side, and merging joins them again where borders are
+    /// smooth. Planar regions (chamfer bands, flat faces) grow without limit. 0: no limit (the
+    /// paper).
+    std::size_t curved_region_faces = 300;
+    /// Greedy merging (our addition): two patches are never joined, directly or through a chain
+    /// of smooth borders, when a patch of one meets a patch of the other at a border of merge
+    /// angle or more. False: the paper's plain greedy merging.
+    bool keep_sharp_borders_apart = true;
 };
 
 struct FeatureSegmentation {
