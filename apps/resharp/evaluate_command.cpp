@@ -40,6 +40,7 @@ struct EvaluateArguments {
     bool restore = false;        // run restore() here instead of reading --output
     bool exact_normals = false;  // with --restore: the oracle's normals replace eq. 5.1
     CurvatureFeature feature = CurvatureFeature::Magnitude;
+    bool paper = false;          // with --restore: paper_variant() of the options
     double sample_pitch = 0.25;  // exact samples: ray grid pitch in h
     double grid_phase = sim::SimulationOptions{}.grid_phase;
     eval::IdealPointOptions ideal;
@@ -218,6 +219,7 @@ Restored obtain_restored(const EvaluateArguments& args, const Mesh& input,
     }
     RestoreOptions options;
     options.edges.feature = args.feature;
+    if (args.paper) options = paper_variant(options);
     options.keep_segmentation = true;
     if (args.exact_normals) options.normal_override = oracle.normals;
     RestoreResult result = restore(input, options);
@@ -354,6 +356,9 @@ void add_evaluate_command(CLI::App& app) {
         {"magnitude", CurvatureFeature::Magnitude}, {"signed", CurvatureFeature::Signed}};
     command->add_option("--curvature-feature", args->feature, "with --restore: as restore's")
         ->transform(CLI::CheckedTransformer(features, CLI::ignore_case));
+    command->add_flag("--paper", args->paper,
+                      "with --restore: the paper's choice wherever resharp makes another, as "
+                      "restore's --paper");
     command->add_flag("--exact-normals", args->exact_normals,
                       "with --restore: the oracle's exact normals replace eq. 5.1 (the ceiling "
                       "of the placement step)");

@@ -22,6 +22,7 @@ struct RestoreArguments {
     std::string segments;
     bool ascii = false;
     bool quiet = false;
+    bool paper = false;
     RestoreOptions options;
 };
 
@@ -132,7 +133,7 @@ private:
 void run_restore(const RestoreArguments& args) {
     const Mesh input = weld(io::read_mesh(args.input));
     Outputs outputs(args);
-    RestoreOptions options = args.options;
+    RestoreOptions options = args.paper ? paper_variant(args.options) : args.options;
     options.keep_segmentation = outputs.segments.has_value();
     const RestoreResult result = restore(input, options);
 
@@ -166,6 +167,16 @@ void add_restore_command(CLI::App& app) {
     command->add_flag("--ascii", args->ascii, "write STL and PLY as text instead of binary");
     command->add_flag("-q,--quiet", args->quiet, "print no summary");
     bind_options(*command, args->options);
+    CLI::Option* paper = command->add_flag(
+        "--paper", args->paper,
+        "the paper's choice wherever resharp makes another (docs/method.md): signed k-means, "
+        "unlimited region growing, plain merging, borders confirmed by edge vertices only, eq. "
+        "5.1 normals");
+    for (const char* choice : {"--curvature-feature", "--normals", "--curved-region-faces",
+                               "--merge-over-sharp-borders", "--unconfirmed-border-angle",
+                               "--smooth-border-angle"}) {
+        paper->excludes(command->get_option(choice));
+    }
     command->callback([args] { run_restore(*args); });
 }
 

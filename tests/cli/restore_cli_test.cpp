@@ -116,6 +116,15 @@ TEST_F(RestoreCli, AnErrorInsideAStageLeavesNoOutput) {
     EXPECT_TRUE(outputs().empty());
 }
 
+TEST_F(RestoreCli, PaperVariantRunsAndRefusesTheChoicesItSets) {
+    EXPECT_EQ(restore(example() + " -q --paper -o " + path("paper.stl")).exit_code, 0);
+    EXPECT_NE(bytes_of(dir_ / "paper.stl"), "");
+    const CliRun run = restore(example() + " --paper --normals fit -o " + path("both.stl"));
+    EXPECT_EQ(run.exit_code, 1);
+    EXPECT_NE(run.stderr_text.find("excludes"), std::string::npos) << run.stderr_text;
+    EXPECT_FALSE(fs::exists(dir_ / "both.stl"));
+}
+
 TEST_F(RestoreCli, SegmentsMustBePly) {
     const CliRun run = restore(example() + " -o " + path("out.stl") + " --segments " +
                             path("segments.stl"));

@@ -60,9 +60,12 @@ double worst_new_vertex_error(const test::SampledShape& shape, const Mesh& out) 
     return worst;
 }
 
-TEST(Restore, BoxGetsEveryEdgeAndCornerBackExactly) {
+/// Our choices and the paper's (paper_variant) must both restore the box exactly.
+class RestoreBox : public ::testing::TestWithParam<bool> {};
+
+TEST_P(RestoreBox, GetsEveryEdgeAndCornerBackExactly) {
     const test::SampledShape shape = test::sampled_box();
-    const Outcome o = restore_shape(shape);
+    const Outcome o = restore_shape(shape, GetParam() ? paper_variant({}) : RestoreOptions{});
     const RestoreReport& r = o.result.report;
     EXPECT_TRUE(r.input.is_clean_closed_manifold());
     EXPECT_EQ(r.feature_patches, 6u);
@@ -83,6 +86,24 @@ TEST(Restore, BoxGetsEveryEdgeAndCornerBackExactly) {
     EXPECT_EQ(r.edge_points_inserted + r.corner_points_inserted,
               o.result.mesh.vertex_count() - shape.mesh.vertex_count());
     expect_invariants(shape, o);
+}
+
+INSTANTIATE_TEST_SUITE_P(OursAndPapers, RestoreBox, ::testing::Bool(),
+                         [](const auto& param_info) { return param_info.param ? "Paper" : "Ours"; });
+
+TEST(Restore, PaperVariantSetsThePapersChoicesAndKeepsTheRest) {
+    RestoreOptions given;
+    given.threads = 1;
+    given.features.max_normal_angle_deg = 6.0;
+    const RestoreOptions paper = paper_variant(given);
+    EXPECT_EQ(paper.edges.feature, CurvatureFeature::Signed);
+    EXPECT_EQ(paper.features.curved_region_faces, 0u);
+    EXPECT_FALSE(paper.features.keep_sharp_borders_apart);
+    EXPECT_EQ(paper.bands.unconfirmed_border_angle_deg, 180.0);
+    EXPECT_EQ(paper.bands.smooth_border_angle_deg, 0.0);
+    EXPECT_EQ(paper.normals.estimate, NormalEstimate::AngleWeighted);
+    EXPECT_EQ(paper.threads, 1);
+    EXPECT_EQ(paper.features.max_normal_angle_deg, 6.0);
 }
 
 TEST(Restore, LBlockRestoresItsConcaveEdge) {

@@ -1,5 +1,7 @@
 #pragma once
-/// Every parameter of the method, one struct per stage, defaults from the paper.
+/// Every parameter of the method, one struct per stage. The paper's parameters default to the
+/// paper's values; where resharp makes another choice than the paper (docs/method.md), the
+/// default is ours and paper_variant() gives the paper's.
 ///   restore(mesh, {.features = {.max_normal_angle_deg = 6.0}});
 
 #include <span>
@@ -28,5 +30,11 @@ struct RestoreOptions {
     /// the placement step. The caller keeps the data alive during restore().
     std::span<const Vec3> normal_override;
 };
+
+/// `options` with the paper's choice wherever resharp offers another: k-means on signed
+/// curvatures, region growing without a size limit, plain greedy merging, borders confirmed by
+/// edge vertices alone, feature normals by eq. 5.1. What the paper leaves open (docs/method.md,
+/// "our reading") and every other field stay as given.
+RestoreOptions paper_variant(RestoreOptions options);
 
 }  // namespace resharp
