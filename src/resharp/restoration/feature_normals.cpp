@@ -87,17 +87,22 @@ void fit_faces(const Mesh& mesh, const Connectivity& c, const std::vector<Index>
 
 /// The linear model of fit_normal_at: per face the row (1, u, w) of its centroid's offset from
 /// the vertex in a tangent frame, beside the face's normal.
+/// Kept by each worker and refilled per vertex, so that no vertex allocates.
 struct FitSamples {
     std::vector<Eigen::Vector3d> rows;
     std::vector<Vec3> normals;
-    double largest_offset2 = 0.0;  ///< squared length of the longest centroid offset
+    std::vector<std::uint8_t> use;  ///< per sample: 1 while it takes part in the fit
+    double largest_offset2 = 0.0;   ///< squared length of the longest centroid offset
 };
 
-FitSamples fit_samples(const Mesh& mesh, const std::vector<Vec3>& normals,
-                       std::span<const Index> faces, Index v, const Vec3& guess) {
+void fill_samples(const Mesh& mesh, const std::vector<Vec3>& normals, std::span<const Index> faces,
+                  Index v, const Vec3& guess, FitSamples& samples) {
     const Vec3 t1 = guess.unitOrthogonal();
     const Vec3 t2 = guess.cross(t1);
-    FitSamples samples;
+    samples.rows.clear();
+    samples.normals.clear();
+    samples.use.assign(faces.size(), 1);
+    samples.largest_offset2 = 0.0;
     for (Index f : faces) {
         const Triangle& t = mesh.triangles[f];
         const Vec3 d = (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0 -
@@ -106,17 +111,16 @@ FitSamples fit_samples(const Mesh& mesh, const std::vector<Vec3>& normals,
         samples.normals.push_back(normals[f]);
         samples.largest_offset2 = std::max(samples.largest_offset2, d.squaredNorm());
     }
-    return samples;
 }
 
-/// Least squares over the samples with use[i] set: the 3x3 coefficients (rows: 1, u, w;
-/// columns: x, y, z), or nullopt when the used centroids do not span the plane.
-std::optional<Eigen::Matrix3d> solve_fit(const FitSamples& s, const std::vector<std::uint8_t>& use) {
+/// Least squares over the samples in use: the 3x3 coefficients (rows: 1, u, w; columns: x, y,
+/// z), or nullopt when the used centroids do not span the plane.
+std::optional<Eigen::Matrix3d> solve_fit(const FitSamples& s) {
     Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
     Eigen::Matrix3d atb = Eigen::Matrix3d::Zero();
     double count = 0.0;
     for (std::size_t i = 0; i < s.rows.size(); ++i) {
-        if (!use[i]) continue;
+        if (!s.use[i]) continue;
         ata += s.rows[i] * s.rows[i].transpose();
         atb += s.rows[i] * s.normals[i].transpose();
         count += 1.0;
@@ -134,18 +138,17 @@ std::optional<Eigen::Matrix3d> solve_fit(const FitSamples& s, const std::vector<
 /// returns n0, the fitted normal at v, or nullopt when the centroids do not span the plane.
 std::optional<Vec3> fit_normal_at(const Mesh& mesh, const std::vector<Vec3>& normals,
                                   std::span<const Index> faces, Index v, const Vec3& guess,
-                                  double max_residual) {
-    const FitSamples samples = fit_samples(mesh, normals, faces, v, guess);
-    std::vector<std::uint8_t> use(faces.size(), 1);
-    std::optional<Eigen::Matrix3d> fit = solve_fit(samples, use);
+                                  double max_residual, FitSamples& samples) {
+    fill_samples(mesh, normals, faces, v, guess, samples);
+    std::optional<Eigen::Matrix3d> fit = solve_fit(samples);
     if (!fit) return std::nullopt;
     bool trimmed = false;
     for (std::size_t i = 0; i < faces.size(); ++i) {
         const Vec3 predicted = fit->transpose() * samples.rows[i];
-        use[i] = (predicted - samples.normals[i]).norm() <= max_residual;
-        trimmed = trimmed || !use[i];
+        samples.use[i] = (predicted - samples.normals[i]).norm() <= max_residual;
+        trimmed = trimmed || !samples.use[i];
     }
-    if (trimmed) fit = solve_fit(samples, use);
+    if (trimmed) fit = solve_fit(samples);
     if (!fit) return std::nullopt;
     const Vec3 n0 = fit->row(0).transpose();
     if (!n0.allFinite() || n0.isZero(0.0)) return std::nullopt;
@@ -174,6 +177,7 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
     tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(mesh.vertex_count()), 4096),
                       [&](const auto& range) {
                           std::vector<Index> faces;
+                          FitSamples samples;
                           for (Index v = range.begin(); v != range.end(); ++v) {
                               if (!needed[v] || vertex_patch[v] == kNoIndex) continue;
                               Vec3 n = own_patch_normal(mesh, connectivity, face_normals,
@@ -185,7 +189,8 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
                               if (options.estimate == NormalEstimate::LinearFit && !n.isZero(0.0)) {
                                   fit_faces(mesh, connectivity, face_patch, vertex_patch, v, faces);
                                   const auto fitted =
-                                      fit_normal_at(mesh, face_normals, faces, v, n, max_residual);
+                                      fit_normal_at(mesh, face_normals, faces, v, n, max_residual,
+                                                    samples);
                                   if (fitted && fitted->dot(n) > min_cosine) {
                                       result.fit_correction_deg[v] =
                                           static_cast<float>(angle_deg(*fitted, n));
