@@ -29,8 +29,9 @@ using namespace resharp;
 struct Stages {
     const Mesh& mesh;
     Connectivity connectivity = build_connectivity(mesh);
-    std::vector<Vec3> face_normals = resharp::face_normals(mesh);
-    std::vector<Vec3> vertex_normals = resharp::vertex_normals(mesh, connectivity);
+    SurfaceNormals normals_of_mesh = surface_normals(mesh, connectivity);
+    const std::vector<Vec3>& face_normals = normals_of_mesh.face;
+    const std::vector<Vec3>& vertex_normals = normals_of_mesh.vertex;
     PrincipalCurvatures curvatures =
         estimate_principal_curvatures(mesh, connectivity, vertex_normals);
     EdgeSegmentation edges = segment_edges(mesh, connectivity, curvatures, face_normals);
@@ -75,9 +76,7 @@ void BM_Diagnose(benchmark::State& state, const std::string& name) {
 
 void BM_Normals(benchmark::State& state, const std::string& name) {
     run_single_threaded(state, name, [](const Stages& s) {
-        const auto fn = face_normals(s.mesh);
-        benchmark::DoNotOptimize(fn.data());
-        benchmark::DoNotOptimize(vertex_normals(s.mesh, s.connectivity).data());
+        benchmark::DoNotOptimize(surface_normals(s.mesh, s.connectivity).vertex.data());
     });
 }
 

@@ -1,6 +1,7 @@
 #include "resharp/curvature/local_height.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <tbb/parallel_for.h>
@@ -11,17 +12,21 @@ double median_edge_length(const Mesh& mesh) {
     if (mesh.triangles.empty()) return 0.0;
     // A sample of at most ~64k edges is plenty for a median and keeps this O(F) at worst.
     const std::size_t stride = std::max<std::size_t>(1, mesh.face_count() / 65536);
-    std::vector<double> lengths;
-    lengths.reserve(3 * (mesh.face_count() / stride + 1));
+    // Squared lengths: sqrt is monotonic, so the root of their median is the median length,
+    // and one root is taken instead of one per edge.
+    std::vector<double> squared_lengths;
+    squared_lengths.reserve(3 * (mesh.face_count() / stride + 1));
     for (std::size_t f = 0; f < mesh.face_count(); f += stride) {
         const Triangle& t = mesh.triangles[f];
         for (int k = 0; k < 3; ++k) {
-            lengths.push_back((mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]]).norm());
+            squared_lengths.push_back(
+                (mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]]).squaredNorm());
         }
     }
-    const auto middle = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
-    std::nth_element(lengths.begin(), middle, lengths.end());
-    return *middle;
+    const auto middle =
+        squared_lengths.begin() + static_cast<std::ptrdiff_t>(squared_lengths.size() / 2);
+    std::nth_element(squared_lengths.begin(), middle, squared_lengths.end());
+    return std::sqrt(*middle);
 }
 
 PrincipalCurvatures estimate_principal_curvatures(const Mesh& mesh,

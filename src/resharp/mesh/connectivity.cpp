@@ -1,5 +1,7 @@
 #include "resharp/mesh/connectivity.h"
 
+#include <algorithm>
+
 #include <tbb/parallel_for.h>
 
 #include "resharp/core/errors.h"
@@ -29,53 +31,56 @@ struct EdgeEntry {
 };
 constexpr Index kForwardBit = Index{1} << 31;
 
-/// Files every half-edge under its lower vertex (a counting sort): the half-edges of one edge
-/// then sit side by side in a list of three or four entries, so finding twins reads contiguous
-/// memory instead of hopping through the triangle array.
-void file_halfedges(const Mesh& mesh, std::vector<Index>& offsets,
-                    std::vector<EdgeEntry>& entries) {
-    offsets.assign(mesh.vertex_count() + 1, 0);
-    for (const Triangle& t : mesh.triangles) {
-        for (int k = 0; k < 3; ++k) ++offsets[std::min(t[k], t[(k + 1) % 3]) + 1];
-    }
-    for (std::size_t v = 0; v < mesh.vertex_count(); ++v) offsets[v + 1] += offsets[v];
-    entries.resize(offsets.back());
-    std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
-    for (Index f = 0; f < mesh.face_count(); ++f) {
+/// The half-edges filed under v: every half-edge whose lower vertex is v lies in a face of v's
+/// ring, so the ring (already sorted by face) yields them without a second counting sort over
+/// all half-edges, and they sit side by side for the twin search.
+void file_halfedges_of(const Mesh& mesh, const Connectivity& c, Index v,
+                       std::vector<EdgeEntry>& filed) {
+    filed.clear();
+    Index previous = kNoIndex;
+    for (Index f : c.faces_around(v)) {
+        if (f == previous) continue;  // a face using v twice is listed twice
+        previous = f;
         const Triangle& t = mesh.triangles[f];
         for (Index k = 0; k < 3; ++k) {
             const Index from = t[k], to = t[(k + 1) % 3];
-            const Index low = std::min(from, to);
-            entries[fill[low]++] = {std::max(from, to), (3 * f + k) | (from < to ? kForwardBit : 0)};
+            if (std::min(from, to) != v) continue;
+            filed.push_back({std::max(from, to), (3 * f + k) | (from < to ? kForwardBit : 0)});
         }
     }
 }
 
+Index halfedge_of(const EdgeEntry& e) { return e.tagged_halfedge & ~kForwardBit; }
+
+/// What the half-edges on one edge are, given all of them (same lower and other vertex).
+EdgeKind kind_of_edge(std::span<const EdgeEntry> on_edge, Index low) {
+    if (on_edge[0].other == low) return EdgeKind::NonManifold;  // collapsed: a degenerate face's
+    switch (on_edge.size()) {
+        case 1: return EdgeKind::Boundary;
+        case 2:
+            return (on_edge[0].tagged_halfedge ^ on_edge[1].tagged_halfedge) & kForwardBit
+                       ? EdgeKind::Manifold
+                       : EdgeKind::Inconsistent;
+        default: return EdgeKind::NonManifold;
+    }
+}
+
 /// Classifies the half-edges filed under one vertex: those with the same other vertex lie on one
-/// edge; exactly two running opposite ways are twins.
-void link_edges_of(std::span<const EdgeEntry> filed, Index low, std::vector<Index>& twin,
+/// edge; exactly two running opposite ways are twins. Sorting the few entries by the other
+/// vertex puts each edge's half-edges side by side, which costs fewer (and better predicted)
+/// comparisons than counting every entry's partners among all the others.
+void link_edges_of(std::span<EdgeEntry> filed, Index low, std::vector<Index>& twin,
                    std::vector<EdgeKind>& kind) {
-    for (std::size_t i = 0; i < filed.size(); ++i) {
-        const Index h = filed[i].tagged_halfedge & ~kForwardBit;
-        if (filed[i].other == low) {
-            kind[h] = EdgeKind::NonManifold;  // a collapsed edge of a degenerate face
-            continue;
-        }
-        std::size_t sharing = 0, partner = i;
-        for (std::size_t j = 0; j < filed.size(); ++j) {
-            if (j == i || filed[j].other != filed[i].other) continue;
-            ++sharing;
-            partner = j;
-        }
-        if (sharing == 0) {
-            kind[h] = EdgeKind::Boundary;
-        } else if (sharing > 1) {
-            kind[h] = EdgeKind::NonManifold;
-        } else if ((filed[i].tagged_halfedge ^ filed[partner].tagged_halfedge) & kForwardBit) {
-            kind[h] = EdgeKind::Manifold;
-            twin[h] = filed[partner].tagged_halfedge & ~kForwardBit;
-        } else {
-            kind[h] = EdgeKind::Inconsistent;
+    std::sort(filed.begin(), filed.end(),
+              [](const EdgeEntry& a, const EdgeEntry& b) { return a.other < b.other; });
+    for (std::size_t first = 0, end = 0; first < filed.size(); first = end) {
+        while (end < filed.size() && filed[end].other == filed[first].other) ++end;
+        const std::span<const EdgeEntry> on_edge(filed.data() + first, end - first);
+        const EdgeKind edge_kind = kind_of_edge(on_edge, low);
+        for (const EdgeEntry& e : on_edge) kind[halfedge_of(e)] = edge_kind;
+        if (edge_kind == EdgeKind::Manifold) {
+            twin[halfedge_of(on_edge[0])] = halfedge_of(on_edge[1]);
+            twin[halfedge_of(on_edge[1])] = halfedge_of(on_edge[0]);
         }
     }
 }
@@ -92,14 +97,11 @@ Connectivity build_connectivity(const Mesh& mesh) {
     const std::size_t nh = 3 * mesh.face_count();
     c.twin.assign(nh, kNoIndex);
     c.edge_kind.assign(nh, EdgeKind::Boundary);
-    std::vector<Index> offsets;
-    std::vector<EdgeEntry> entries;
-    file_halfedges(mesh, offsets, entries);
     tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(mesh.vertex_count()), 4096),
                       [&](const auto& range) {
+                          std::vector<EdgeEntry> filed;
                           for (Index v = range.begin(); v != range.end(); ++v) {
-                              const std::span<const EdgeEntry> filed(
-                                  entries.data() + offsets[v], entries.data() + offsets[v + 1]);
+                              file_halfedges_of(mesh, c, v, filed);
                               link_edges_of(filed, v, c.twin, c.edge_kind);
                           }
                       });

@@ -9,10 +9,32 @@
 
 namespace resharp {
 
-Vec3 triangle_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
-    const Vec3 n = (b - a).cross(c - a);
+namespace {
+
+/// Calls body(i) for every i below count, in parallel blocks of at least `grain`.
+template <class Body>
+void for_each_index(std::size_t count, std::size_t grain, Body&& body) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, grain), [&](const auto& range) {
+        for (std::size_t i = range.begin(); i != range.end(); ++i) body(i);
+    });
+}
+
+/// The normal of face f scaled by twice its area.
+Vec3 area_vector(const Mesh& mesh, std::size_t f) {
+    const Triangle& t = mesh.triangles[f];
+    const Vec3& a = mesh.positions[t[0]];
+    return (mesh.positions[t[1]] - a).cross(mesh.positions[t[2]] - a);
+}
+
+Vec3 unit_or_zero(const Vec3& n) {
     const double length = n.norm();
     return length > 0.0 ? Vec3(n / length) : Vec3::Zero();
+}
+
+}  // namespace
+
+Vec3 triangle_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
+    return unit_or_zero((b - a).cross(c - a));
 }
 
 double corner_angle(const Mesh& mesh, Index f, int k) {
@@ -26,34 +48,27 @@ double corner_angle(const Mesh& mesh, Index f, int k) {
 
 std::vector<Vec3> face_normals(const Mesh& mesh) {
     std::vector<Vec3> normals(mesh.face_count());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, normals.size(), 8192),
-                      [&](const auto& range) {
-                          for (std::size_t f = range.begin(); f != range.end(); ++f) {
-                              const Triangle& t = mesh.triangles[f];
-                              normals[f] = triangle_normal(mesh.positions[t[0]],
-                                                           mesh.positions[t[1]],
-                                                           mesh.positions[t[2]]);
-                          }
-                      });
+    for_each_index(normals.size(), 8192,
+                   [&](std::size_t f) { normals[f] = unit_or_zero(area_vector(mesh, f)); });
     return normals;
 }
 
+SurfaceNormals surface_normals(const Mesh& mesh, const Connectivity& connectivity) {
+    SurfaceNormals n{std::vector<Vec3>(mesh.face_count()), std::vector<Vec3>(mesh.vertex_count())};
+    // The face slots hold the area vectors until every vertex has summed those of its ring (in
+    // ring order, so the sums do not depend on the thread count); then they are normalised.
+    for_each_index(n.face.size(), 8192, [&](std::size_t f) { n.face[f] = area_vector(mesh, f); });
+    for_each_index(n.vertex.size(), 4096, [&](std::size_t v) {
+        Vec3 sum = Vec3::Zero();
+        for (Index f : connectivity.faces_around(static_cast<Index>(v))) sum += n.face[f];
+        n.vertex[v] = unit_or_zero(sum);
+    });
+    for_each_index(n.face.size(), 8192, [&](std::size_t f) { n.face[f] = unit_or_zero(n.face[f]); });
+    return n;
+}
+
 std::vector<Vec3> vertex_normals(const Mesh& mesh, const Connectivity& connectivity) {
-    std::vector<Vec3> result(mesh.vertex_count());
-    tbb::parallel_for(
-        tbb::blocked_range<std::size_t>(0, result.size(), 4096), [&](const auto& range) {
-            for (std::size_t v = range.begin(); v != range.end(); ++v) {
-                Vec3 sum = Vec3::Zero();  // twice the area-weighted sum
-                for (Index f : connectivity.faces_around(static_cast<Index>(v))) {
-                    const Triangle& t = mesh.triangles[f];
-                    const Vec3& a = mesh.positions[t[0]];
-                    sum += (mesh.positions[t[1]] - a).cross(mesh.positions[t[2]] - a);
-                }
-                const double length = sum.norm();
-                result[v] = length > 0.0 ? Vec3(sum / length) : Vec3::Zero();
-            }
-        });
-    return result;
+    return surface_normals(mesh, connectivity).vertex;
 }
 
 double angle_deg(const Vec3& a, const Vec3& b) {

@@ -18,6 +18,16 @@ double corner_angle(const Mesh& mesh, Index f, int k);
 /// Per face (#F): unit normals, zero for degenerate faces.
 std::vector<Vec3> face_normals(const Mesh& mesh);
 
+/// Face and vertex normals together, as every stage after mesh building takes them.
+struct SurfaceNormals {
+    std::vector<Vec3> face;    ///< per face (#F): as face_normals gives them
+    std::vector<Vec3> vertex;  ///< per vertex (#V): as vertex_normals gives them
+};
+
+/// Takes the mesh and its connectivity; gives both kinds of normal, computing each face's cross
+/// product once where the two functions above would compute it four times.
+SurfaceNormals surface_normals(const Mesh& mesh, const Connectivity& connectivity);
+
 /// Per vertex (#V): area-weighted mean of the incident face normals, normalised; zero where
 /// every incident face is degenerate. Area weights need no trigonometry, which matters at a
 /// million corners; eq. 5.1's angle weights are kept for the feature normals that place points.

@@ -61,13 +61,14 @@ public:
 
     Mesh run() {
         Connectivity connectivity;
-        std::vector<Vec3> face_normals, vertex_normals;
+        SurfaceNormals normals_of_input;
         timed(Stage::MeshBuilding, [&] {
             connectivity = build_connectivity(mesh_);
             report_.input = diagnose(mesh_, connectivity);
-            face_normals = resharp::face_normals(mesh_);
-            vertex_normals = resharp::vertex_normals(mesh_, connectivity);
+            normals_of_input = surface_normals(mesh_, connectivity);
         });
+        const std::vector<Vec3>& face_normals = normals_of_input.face;
+        const std::vector<Vec3>& vertex_normals = normals_of_input.vertex;
         PrincipalCurvatures curvatures;
         timed(Stage::Curvature, [&] {
             curvatures = estimate_principal_curvatures(mesh_, connectivity, vertex_normals);
