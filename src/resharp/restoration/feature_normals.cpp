@@ -66,22 +66,34 @@ Vec3 neighbours_patch_normal(const Mesh& mesh, const Connectivity& c,
     return length > 0.0 ? Vec3(sum / length) : Vec3::Zero();
 }
 
-/// The faces wholly on v's patch around v and around its same-patch neighbours.
+/// The faces wholly on v's patch around v and around its same-patch neighbours, each once, in
+/// the order first met. A face met again contains v or a neighbour already taken, which is
+/// cheaper to test than searching the list.
 void fit_faces(const Mesh& mesh, const Connectivity& c, const std::vector<Index>& face_patch,
-               const std::vector<Index>& vertex_patch, Index v, std::vector<Index>& out) {
+               const std::vector<Index>& vertex_patch, Index v, std::vector<Index>& out,
+               std::vector<Index>& taken) {
     out.clear();
+    taken.assign(1, v);
     const Index patch = vertex_patch[v];
+    auto met_before = [&](const Triangle& t) {
+        return std::any_of(taken.begin(), taken.end(),
+                           [&](Index q) { return t[0] == q || t[1] == q || t[2] == q; });
+    };
     auto take_ring = [&](Index q) {
         for (Index f : c.faces_around(q)) {
-            if (face_patch[f] == patch && lies_on_patch(mesh.triangles[f], vertex_patch, patch) &&
-                std::find(out.begin(), out.end(), f) == out.end()) {
+            const Triangle& t = mesh.triangles[f];
+            if (face_patch[f] == patch && lies_on_patch(t, vertex_patch, patch) &&
+                (q == v || !met_before(t))) {
                 out.push_back(f);
             }
         }
+        if (q != v) taken.push_back(q);
     };
     take_ring(v);
     for_each_ring_vertex(mesh, c, v, [&](Index q) {
-        if (vertex_patch[q] == patch) take_ring(q);
+        if (vertex_patch[q] == patch && std::find(taken.begin(), taken.end(), q) == taken.end()) {
+            take_ring(q);
+        }
     });
 }
 
@@ -140,12 +152,13 @@ std::optional<Vec3> fit_normal_at(const Mesh& mesh, const std::vector<Vec3>& nor
                                   std::span<const Index> faces, Index v, const Vec3& guess,
                                   double max_residual, FitSamples& samples) {
     fill_samples(mesh, normals, faces, v, guess, samples);
+    const double max_residual2 = max_residual * max_residual;
     std::optional<Eigen::Matrix3d> fit = solve_fit(samples);
     if (!fit) return std::nullopt;
     bool trimmed = false;
     for (std::size_t i = 0; i < faces.size(); ++i) {
         const Vec3 predicted = fit->transpose() * samples.rows[i];
-        samples.use[i] = (predicted - samples.normals[i]).norm() <= max_residual;
+        samples.use[i] = (predicted - samples.normals[i]).squaredNorm() <= max_residual2;
         trimmed = trimmed || !samples.use[i];
     }
     if (trimmed) fit = solve_fit(samples);
@@ -153,6 +166,41 @@ std::optional<Vec3> fit_normal_at(const Mesh& mesh, const std::vector<Vec3>& nor
     const Vec3 n0 = fit->row(0).transpose();
     if (!n0.allFinite() || n0.isZero(0.0)) return std::nullopt;
     return Vec3(n0.normalized());
+}
+
+struct FitLimits {
+    double min_cosine;    ///< of the largest correction of eq. 5.1's normal
+    double max_residual;  ///< chord between a face normal and the first fit
+};
+
+/// Buffers one worker reuses for every vertex.
+struct FitScratch {
+    std::vector<Index> faces, taken;
+    FitSamples samples;
+};
+
+/// True when the faces' normals all lie within about 1e-6 degrees of the first: the fit would
+/// return that plane's normal, which eq. 5.1 already is.
+bool coplanar(const std::vector<Vec3>& normals, std::span<const Index> faces) {
+    return std::all_of(faces.begin(), faces.end(), [&](Index f) {
+        return (normals[f] - normals[faces[0]]).squaredNorm() < 1e-16;
+    });
+}
+
+/// Replaces eq. 5.1's normal n at v by the linear fit where the fit is well posed, not planar
+/// and corrects n by less than the limit; `correction` gets the angle (degrees) it moved n by.
+void refine_by_fit(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>& normals,
+                   const std::vector<Index>& face_patch, const std::vector<Index>& vertex_patch,
+                   Index v, const FitLimits& limits, Vec3& n, float& correction,
+                   FitScratch& scratch) {
+    fit_faces(mesh, c, face_patch, vertex_patch, v, scratch.faces, scratch.taken);
+    if (scratch.faces.empty() || coplanar(normals, scratch.faces)) return;
+    const auto fitted =
+        fit_normal_at(mesh, normals, scratch.faces, v, n, limits.max_residual, scratch.samples);
+    if (fitted && fitted->dot(n) > limits.min_cosine) {
+        correction = static_cast<float>(angle_deg(*fitted, n));
+        n = *fitted;
+    }
 }
 
 }  // namespace
@@ -165,8 +213,8 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
                                   const FeatureNormalOptions& options) {
     validate(options);
     const double degree = std::numbers::pi / 180.0;
-    const double min_cosine = std::cos(options.max_fit_correction_deg * degree);
-    const double max_residual = 2.0 * std::sin(options.max_fit_residual_deg * degree / 2.0);
+    const FitLimits fit{std::cos(options.max_fit_correction_deg * degree),
+                        2.0 * std::sin(options.max_fit_residual_deg * degree / 2.0)};
     std::vector<std::uint8_t> needed(mesh.vertex_count(), 0);
     for (Index f = 0; f < mesh.face_count(); ++f) {
         if (bands.face_role[f] == BandRole::None) continue;
@@ -176,8 +224,7 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
                           std::vector<float>(mesh.vertex_count(), 0.0f)};
     tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(mesh.vertex_count()), 4096),
                       [&](const auto& range) {
-                          std::vector<Index> faces;
-                          FitSamples samples;
+                          FitScratch scratch;
                           for (Index v = range.begin(); v != range.end(); ++v) {
                               if (!needed[v] || vertex_patch[v] == kNoIndex) continue;
                               Vec3 n = own_patch_normal(mesh, connectivity, face_normals,
@@ -187,15 +234,9 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
                                                               face_patch, vertex_patch, v);
                               }
                               if (options.estimate == NormalEstimate::LinearFit && !n.isZero(0.0)) {
-                                  fit_faces(mesh, connectivity, face_patch, vertex_patch, v, faces);
-                                  const auto fitted =
-                                      fit_normal_at(mesh, face_normals, faces, v, n, max_residual,
-                                                    samples);
-                                  if (fitted && fitted->dot(n) > min_cosine) {
-                                      result.fit_correction_deg[v] =
-                                          static_cast<float>(angle_deg(*fitted, n));
-                                      n = *fitted;
-                                  }
+                                  refine_by_fit(mesh, connectivity, face_normals, face_patch,
+                                                vertex_patch, v, fit, n,
+                                                result.fit_correction_deg[v], scratch);
                               }
                               result.normal[v] = n;
                           }
