@@ -270,14 +270,18 @@ std::size_t merge_patches(const Mesh& mesh, const Connectivity& c, const std::ve
                           std::size_t patch_count) {
     std::vector<std::tuple<Index, Index, double>> votes;  // (a, b, -cosine): ascending = angle
     std::vector<Index> patches;
+    std::vector<Vec3> patch_normals;
     for (Index v = 0; v < mesh.vertex_count(); ++v) {
+        if (ring_patch_if_single(c, face_patch, v) != kMixedRing) continue;  // no border here
         ring_patches(c, face_patch, v, patches);
         std::sort(patches.begin(), patches.end());
+        patch_normals.clear();
+        for (Index p : patches) {
+            patch_normals.push_back(patch_mean_normal(mesh, c, normals, face_patch, v, p));
+        }
         for (std::size_t a = 0; a < patches.size(); ++a) {
-            const Vec3 na = patch_mean_normal(mesh, c, normals, face_patch, v, patches[a]);
             for (std::size_t b = a + 1; b < patches.size(); ++b) {
-                const Vec3 nb = patch_mean_normal(mesh, c, normals, face_patch, v, patches[b]);
-                votes.emplace_back(patches[a], patches[b], -na.dot(nb));
+                votes.emplace_back(patches[a], patches[b], -patch_normals[a].dot(patch_normals[b]));
             }
         }
     }
