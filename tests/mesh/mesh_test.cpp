@@ -49,6 +49,26 @@ TEST(Weld, DropsUnusedPoints) {
     EXPECT_EQ(mesh.triangles[0], (Triangle{0, 1, 2}));
 }
 
+TEST(Weld, KeepsEveryPointOfManyLooseTrianglesAndFindsTheirCopies) {
+    // Three distinct points per triangle: six times the vertices a closed mesh of as many faces
+    // has, so the position table must grow several times. Then the same soup again: all copies.
+    TriangleSoup soup;
+    const Index loose = 5000;
+    for (Index f = 0; f < 2 * loose; ++f) {
+        const double x = f % loose;
+        soup.points.insert(soup.points.end(), {{x, 0, 0}, {x, 1, 0.5}, {x + 0.5, 0, 1}});
+        soup.triangles.push_back({3 * f, 3 * f + 1, 3 * f + 2});
+    }
+    const Mesh mesh = weld(soup);
+    ASSERT_EQ(mesh.vertex_count(), 3u * loose);
+    for (Index f = 0; f < 2 * loose; ++f) {
+        EXPECT_EQ(mesh.triangles[f], mesh.triangles[f % loose]);
+        for (int k = 0; k < 3; ++k) {
+            ASSERT_EQ(mesh.positions[mesh.triangles[f][k]], soup.points[soup.triangles[f][k]]);
+        }
+    }
+}
+
 TEST(Weld, RejectsOutOfRangeIndexAndNonFiniteCoordinates) {
     TriangleSoup soup;
     soup.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};

@@ -1,10 +1,10 @@
 #include "resharp/mesh/mesh.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
 #include <string>
-#include <unordered_map>
 
 #include "resharp/core/errors.h"
 
@@ -31,14 +31,60 @@ std::uint64_t key_bits(double value) {
     return std::bit_cast<std::uint64_t>(value == 0.0 ? 0.0 : value);  // -0 welds with +0
 }
 
+PositionKey key_of(const Vec3& x) { return {key_bits(x.x()), key_bits(x.y()), key_bits(x.z())}; }
+
+/// The distinct positions met so far, found by their exact bits: open addressing with linear
+/// probing over indices into the welded positions, at most half full (it doubles). Written here
+/// because std::unordered_map allocates a node per entry, which made welding slower than the
+/// whole restoration (57 ms for mech's 172k vertices).
+class PositionTable {
+public:
+    explicit PositionTable(std::size_t expected) { rebuild(std::bit_ceil(2 * expected + 2), {}); }
+
+    /// The index of x in `positions`, appending it if it is new.
+    Index find_or_add(const Vec3& x, std::vector<Vec3>& positions) {
+        const PositionKey key = key_of(x);
+        for (std::size_t slot = first_slot(key);; slot = (slot + 1) & mask_) {
+            if (slots_[slot] == kNoIndex) {
+                slots_[slot] = static_cast<Index>(positions.size());
+                positions.push_back(x);
+                if (2 * positions.size() > slots_.size()) rebuild(2 * slots_.size(), positions);
+                return static_cast<Index>(positions.size() - 1);
+            }
+            if (key_of(positions[slots_[slot]]) == key) return slots_[slot];
+        }
+    }
+
+private:
+    /// The top bits of the hash: a multiplicative hash mixes best there.
+    std::size_t first_slot(const PositionKey& key) const {
+        return PositionKeyHash{}(key) >> shift_;
+    }
+
+    void rebuild(std::size_t size, const std::vector<Vec3>& positions) {
+        slots_.assign(size, kNoIndex);
+        mask_ = size - 1;
+        shift_ = 64 - std::countr_zero(size);
+        for (std::size_t i = 0; i < positions.size(); ++i) {
+            std::size_t slot = first_slot(key_of(positions[i]));
+            while (slots_[slot] != kNoIndex) slot = (slot + 1) & mask_;
+            slots_[slot] = static_cast<Index>(i);
+        }
+    }
+
+    std::vector<Index> slots_;
+    std::size_t mask_ = 0;
+    int shift_ = 64;
+};
+
 }  // namespace
 
 Mesh weld(const TriangleSoup& soup) {
     Mesh mesh;
     mesh.triangles.reserve(soup.triangles.size());
     std::vector<Index> new_index(soup.points.size(), kNoIndex);
-    std::unordered_map<PositionKey, Index, PositionKeyHash> index_of;
-    index_of.reserve(soup.points.size() / 2 + 1);
+    // A closed triangle mesh has about half as many vertices as faces.
+    PositionTable table(std::min(soup.points.size(), soup.triangles.size() / 2 + 1));
 
     for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
         Triangle welded{};
@@ -55,11 +101,7 @@ Mesh weld(const TriangleSoup& soup) {
                     throw InvalidInput("point " + std::to_string(p) +
                                        " has a NaN or infinite coordinate");
                 }
-                const PositionKey key{key_bits(x.x()), key_bits(x.y()), key_bits(x.z())};
-                const auto [it, inserted] =
-                    index_of.try_emplace(key, static_cast<Index>(mesh.positions.size()));
-                if (inserted) mesh.positions.push_back(x);
-                new_index[p] = it->second;
+                new_index[p] = table.find_or_add(x, mesh.positions);
             }
             welded[k] = new_index[p];
         }
