@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstdint>
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+
 
 namespace resharp {
 namespace {
@@ -100,7 +102,7 @@ bool angles_overlap(const Vec3& n, const Vec3& u1, const Vec3& v1, const Vec3& u
     auto parts = [&](const Vec3& side, const Vec3& inner, const Vec3& w1, const Vec3& w2) {
         const Vec3 across = n.cross(side);  // across . w = |side| times w's distance from the line
         const double toward_inner = across.dot(inner) >= 0.0 ? 1.0 : -1.0;
-        const double margin = tolerance * side.norm();
+        const double margin = tolerance * side.norm();  // across has side's length
         auto beyond = [&](const Vec3& w) {
             const double away = -toward_inner * across.dot(w);
             return away > margin || (away >= -margin && w.dot(side) < 0.0);
@@ -133,6 +135,36 @@ bool meet_beyond_vertex(const IdTriangle& s, int k, const IdTriangle& t, int m, 
     return segment_meets(b, c, t, tolerance) || segment_meets(d, e, s, tolerance);
 }
 
+/// Whether every vertex of t lies within `tolerance` of s's plane.
+bool lies_in_plane_of(const IdTriangle& s, const IdTriangle& t, double tolerance) {
+    for (const Vec3& x : t.p) {
+        if (std::abs(height(s, x)) > tolerance) return false;
+    }
+    return true;
+}
+
+/// Two triangles in one plane (s's) overlap unless the line along one of their six edges
+/// parts them by more than `tolerance` (separating axes in the plane).
+bool overlap_in_plane(const IdTriangle& s, const IdTriangle& t, double tolerance) {
+    auto parted_along = [&](const IdTriangle& owner, int k) {
+        const Vec3 edge = owner.p[(k + 1) % 3] - owner.p[k];
+        const Vec3 axis = s.n.cross(edge);  // projections are |edge| times distances
+        double s_min = axis.dot(s.p[0]), s_max = s_min, t_min = axis.dot(t.p[0]), t_max = t_min;
+        for (int i = 1; i < 3; ++i) {
+            s_min = std::min(s_min, axis.dot(s.p[i]));
+            s_max = std::max(s_max, axis.dot(s.p[i]));
+            t_min = std::min(t_min, axis.dot(t.p[i]));
+            t_max = std::max(t_max, axis.dot(t.p[i]));
+        }
+        const double gap = std::max(t_min - s_max, s_min - t_max);
+        return gap > 0.0 && gap * gap > tolerance * tolerance * edge.squaredNorm();
+    };
+    for (int k = 0; k < 3; ++k) {
+        if (parted_along(s, k) || parted_along(t, k)) return false;
+    }
+    return true;
+}
+
 int index_of(const IdTriangle& t, Index id) {
     for (int k = 0; k < 3; ++k) {
         if (t.id[k] == id) return k;
@@ -157,7 +189,7 @@ IdTriangle IdTriangle::make(const Triangle& id, const Vec3& a, const Vec3& b, co
 }
 
 bool triangles_meet(const IdTriangle& s, const IdTriangle& t, double tolerance) {
-    if (s.box.exteriorDistance(t.box) > tolerance) return false;
+    if (s.box.squaredExteriorDistance(t.box) > tolerance * tolerance) return false;
     if (s.n.isZero(0.0) || t.n.isZero(0.0)) return false;
     std::array<int, 3> in_t{};  // per vertex of s, its index in t or -1
     int shared = 0;
@@ -178,6 +210,7 @@ bool triangles_meet(const IdTriangle& s, const IdTriangle& t, double tolerance) 
         return meet_beyond_vertex(s, k, t, in_t[k], tolerance);
     }
     if (strictly_one_side(s, t, tolerance) || strictly_one_side(t, s, tolerance)) return false;
+    if (lies_in_plane_of(s, t, tolerance)) return overlap_in_plane(s, t, tolerance);
     for (int k = 0; k < 3; ++k) {
         if (segment_meets(s.p[k], s.p[(k + 1) % 3], t, tolerance) ||
             segment_meets(t.p[k], t.p[(k + 1) % 3], s, tolerance)) {
@@ -189,73 +222,6 @@ bool triangles_meet(const IdTriangle& s, const IdTriangle& t, double tolerance) 
 
 namespace {
 
-/// A uniform grid filing the touched boxes by the cells they cover.
-class BoxGrid {
-public:
-    explicit BoxGrid(std::span<const Box3> boxes) {
-        double mean_side = 0.0;
-        for (const Box3& b : boxes) {
-            bounds_.extend(b);
-            mean_side += b.sizes().maxCoeff();
-        }
-        // Cells about twice a box wide: a box covers few cells and a cell holds few boxes.
-        cell_ = std::max(2.0 * mean_side / double(boxes.size()), 1e-12 * bounds_.sizes().maxCoeff());
-        while (cell_count() > kMaxCells) cell_ *= 2.0;
-        for (int k = 0; k < 3; ++k) dims_[k] = cells_along(k);
-        start_.assign(static_cast<std::size_t>(cell_count()) + 1, 0);
-        for (const Box3& b : boxes) for_cells(b, [&](std::size_t c) { ++start_[c + 1]; });
-        for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
-        items_.resize(start_.back());
-        std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-        for (std::size_t i = 0; i < boxes.size(); ++i) {
-            for_cells(boxes[i], [&](std::size_t c) { items_[fill[c]++] = static_cast<Index>(i); });
-        }
-    }
-
-    /// Calls visit(i) for each box filed in a cell that `box` covers (a box may come twice).
-    template <class Visit>
-    void for_each_near(const Box3& box, Visit&& visit) const {
-        if (!bounds_.intersects(box)) return;
-        for_cells(box, [&](std::size_t c) {
-            for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) visit(items_[k]);
-        });
-    }
-
-private:
-    /// Enough cells for a fine grid, few enough that counting them costs nothing.
-    static constexpr double kMaxCells = double(1 << 22);
-
-    double cell_count() const {
-        double count = 1.0;
-        for (int k = 0; k < 3; ++k) count *= cells_along(k);
-        return count;
-    }
-    int cells_along(int k) const {
-        return std::max(1, static_cast<int>(std::ceil(bounds_.sizes()[k] / cell_)));
-    }
-    int cell_of(double x, int k) const {
-        return std::clamp(static_cast<int>((x - bounds_.min()[k]) / cell_), 0, dims_[k] - 1);
-    }
-    template <class Visit>
-    void for_cells(const Box3& box, Visit&& visit) const {
-        std::array<int, 3> lo{}, hi{};
-        for (int k = 0; k < 3; ++k) {
-            lo[k] = cell_of(box.min()[k], k);
-            hi[k] = cell_of(box.max()[k], k);
-        }
-        for (int z = lo[2]; z <= hi[2]; ++z)
-            for (int y = lo[1]; y <= hi[1]; ++y)
-                for (int x = lo[0]; x <= hi[0]; ++x)
-                    visit((std::size_t(z) * dims_[1] + y) * dims_[0] + x);
-    }
-
-    Box3 bounds_;
-    double cell_ = 1.0;
-    std::array<int, 3> dims_{1, 1, 1};
-    std::vector<std::uint32_t> start_;
-    std::vector<Index> items_;
-};
-
 Box3 box_of(const Mesh& mesh, Index f) {
     Box3 box;
     for (Index v : mesh.triangles[f]) box.extend(mesh.positions[v]);
@@ -264,45 +230,89 @@ Box3 box_of(const Mesh& mesh, Index f) {
 
 }  // namespace
 
-NearbyFaces::NearbyFaces(const Mesh& mesh, std::span<const Index> touched,
-                         std::span<const Box3> boxes) {
-    start_.assign(touched.size() + 1, 0);
-    if (touched.empty()) return;
-    const BoxGrid grid(boxes);
-    std::vector<Index> rank(mesh.face_count(), kNoIndex);
-    for (std::size_t i = 0; i < touched.size(); ++i) rank[touched[i]] = static_cast<Index>(i);
-    auto box_of_face = [&](Index g) { return rank[g] != kNoIndex ? boxes[rank[g]] : box_of(mesh, g); };
-    auto for_each_meeting = [&](Index g, auto&& visit) {
-        const Box3 box = box_of_face(g);
-        grid.for_each_near(box, [&](Index i) {
-            if (touched[i] != g && boxes[i].intersects(box)) visit(i);
-        });
-    };
-    // One pass over all faces, in parallel, marks those near a touched box; a second pass over
-    // the few marked ones, in face order, files them (so the lists are the same on any thread
-    // count).
-    std::vector<std::uint8_t> is_near(mesh.face_count(), 0);
-    tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(mesh.face_count())),
-                      [&](const tbb::blocked_range<Index>& range) {
-                          for (Index g = range.begin(); g != range.end(); ++g) {
-                              for_each_meeting(g, [&](Index) { is_near[g] = 1; });
-                          }
-                      });
-    std::vector<std::pair<Index, Index>> pairs;  // (touched number, near face)
-    std::vector<Index> found;
-    for (Index g = 0; g < mesh.face_count(); ++g) {
-        if (!is_near[g]) continue;
-        found.clear();
-        for_each_meeting(g, [&](Index i) { found.push_back(i); });
-        std::sort(found.begin(), found.end());
-        found.erase(std::unique(found.begin(), found.end()), found.end());
-        for (Index i : found) pairs.emplace_back(i, g);
+namespace {
+
+/// Scratch of one thread's searches: per face and per vertex, the last search that met it.
+struct SearchMarks {
+    std::vector<Index> face, vertex;
+    std::vector<Index> frontier;
+    SearchMarks(std::size_t faces, std::size_t vertices)
+        : face(faces, kNoIndex), vertex(vertices, kNoIndex) {}
+};
+
+/// Appends to `out` (touched number i, face) for each face whose box meets box i, found by a
+/// search from face f across the vertices of faces that meet it.
+void search_near(const Mesh& mesh, const Connectivity& connectivity, Index f, Index i,
+                 std::span<const Index> number, std::span<const Box3> boxes, SearchMarks& marks,
+                 std::vector<std::pair<Index, Index>>& out) {
+    // The search goes on from vertices within the box widened by its own size: a face meeting
+    // the box with no vertex in that reach would be longer than twice the box.
+    const Box3 reach(boxes[i].min() - boxes[i].sizes(), boxes[i].max() + boxes[i].sizes());
+    marks.face[f] = i;
+    marks.frontier.clear();
+    for (Index v : mesh.triangles[f]) {
+        marks.vertex[v] = i;
+        marks.frontier.push_back(v);
     }
-    for (const auto& [i, g] : pairs) ++start_[i + 1];
+    for (std::size_t next = 0; next < marks.frontier.size(); ++next) {
+        for (Index g : connectivity.faces_around(marks.frontier[next])) {
+            if (marks.face[g] == i) continue;
+            marks.face[g] = i;
+            const Box3 box = number[g] != kNoIndex ? boxes[number[g]] : box_of(mesh, g);
+            if (!box.intersects(boxes[i])) continue;
+            out.emplace_back(i, g);
+            for (Index v : mesh.triangles[g]) {
+                if (marks.vertex[v] == i || !reach.contains(mesh.positions[v])) continue;
+                marks.vertex[v] = i;
+                marks.frontier.push_back(v);
+            }
+        }
+    }
+}
+
+}  // namespace
+
+NearbyFaces::NearbyFaces(const Mesh& mesh, const Connectivity& connectivity,
+                         std::span<const Index> touched, std::span<const Index> number,
+                         std::span<const Box3> boxes) {
+    // Each touched face searches its own surroundings, in parallel, in chunks whose results are
+    // joined in order (the same lists on any thread count).
+    constexpr std::size_t kChunk = 256;
+    std::vector<std::vector<std::pair<Index, Index>>> found((touched.size() + kChunk - 1) / kChunk);
+    tbb::enumerable_thread_specific<SearchMarks> marks(mesh.face_count(), mesh.vertex_count());
+    tbb::parallel_for(std::size_t{0}, found.size(), [&](std::size_t chunk) {
+        SearchMarks& mine = marks.local();
+        const std::size_t end = std::min(touched.size(), (chunk + 1) * kChunk);
+        for (std::size_t i = chunk * kChunk; i < end; ++i) {
+            search_near(mesh, connectivity, touched[i], static_cast<Index>(i), number, boxes,
+                        mine, found[chunk]);
+        }
+    });
+    // Touched faces near each other are listed both ways, so that a face whose pieces change
+    // can tell every face that checked against them.
+    start_.assign(touched.size() + 1, 0);
+    for (const auto& pairs : found) {
+        for (const auto& [i, g] : pairs) {
+            ++start_[i + 1];
+            if (number[g] != kNoIndex) ++start_[number[g] + 1];
+        }
+    }
     for (std::size_t i = 1; i < start_.size(); ++i) start_[i] += start_[i - 1];
-    faces_.resize(pairs.size());
+    faces_.resize(start_.back());
     std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
-    for (const auto& [i, g] : pairs) faces_[fill[i]++] = g;
+    for (const auto& pairs : found) {
+        for (const auto& [i, g] : pairs) {
+            faces_[fill[i]++] = g;
+            if (number[g] != kNoIndex) faces_[fill[number[g]]++] = touched[i];
+        }
+    }
+    size_.resize(touched.size());
+    tbb::parallel_for(std::size_t{0}, touched.size(), [&](std::size_t i) {
+        const auto first = faces_.begin() + static_cast<std::ptrdiff_t>(start_[i]);
+        const auto last = faces_.begin() + static_cast<std::ptrdiff_t>(start_[i + 1]);
+        std::sort(first, last);
+        size_[i] = static_cast<Index>(std::unique(first, last) - first);  // pairs found twice
+    });
 }
 
 }  // namespace resharp

@@ -15,6 +15,7 @@
 #include <Eigen/Geometry>
 
 #include "resharp/core/types.h"
+#include "resharp/mesh/connectivity.h"
 #include "resharp/mesh/mesh.h"
 
 namespace resharp {
@@ -43,19 +44,23 @@ bool triangles_meet(const IdTriangle& s, const IdTriangle& t, double tolerance);
 /// Per face that gets points ("touched"), the other faces of the mesh whose boxes meet its box.
 class NearbyFaces {
 public:
-    /// Takes the mesh, the touched faces in ascending order and, for each, the box that holds
-    /// the face and its points (every piece it may be cut into lies in it). Each face is boxed
-    /// by its vertices, a touched face by its given box. A uniform grid over the touched boxes
-    /// keeps the search to one pass over the faces.
-    NearbyFaces(const Mesh& mesh, std::span<const Index> touched, std::span<const Box3> boxes);
+    /// Takes the mesh and its connectivity, the touched faces, per face (#F) its number among
+    /// them or kNoIndex, and per touched face the box that holds the face and its points (every
+    /// piece it may be cut into lies in it); any other face is boxed by its vertices. Each
+    /// touched face searches outwards from its vertices through the faces that meet its box,
+    /// so the cost follows the faces near the bands, not the mesh. A separate sheet of the
+    /// surface crossing the box with no face joining it to the band inside the box (material
+    /// thinner than a chamfer, cut apart from it) is not seen.
+    NearbyFaces(const Mesh& mesh, const Connectivity& connectivity, std::span<const Index> touched,
+                std::span<const Index> number, std::span<const Box3> boxes);
 
-    /// The faces near touched face number i (its index in `touched`), ascending.
-    std::span<const Index> of(std::size_t i) const {
-        return {faces_.data() + start_[i], start_[i + 1] - start_[i]};
-    }
+    /// The faces near touched face number i (its index in `touched`), ascending; touched faces
+    /// near each other are in each other's lists.
+    std::span<const Index> of(std::size_t i) const { return {faces_.data() + start_[i], size_[i]}; }
 
 private:
     std::vector<std::size_t> start_;
+    std::vector<Index> size_;
     std::vector<Index> faces_;
 };
 

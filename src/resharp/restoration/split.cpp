@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <numbers>
 #include <span>
 
@@ -132,12 +133,12 @@ public:
             if (!ids_.is_original(v)) continue;
             const Reference r = reference_.at(v);
             if (r.normal.isZero(0.0)) continue;
-            if (n.dot(r.normal) <= sin_deg(r.margin_deg) * n.norm()) return Fault::Quality;
+            const double min_cosine = sin_deg(r.margin_deg);
+            if (n.dot(r.normal) <= min_cosine * n.norm()) return Fault::Quality;
             if (thin && n.dot(r.normal) <= sin_deg(std::min(2.0 * r.margin_deg, 89.0)) * n.norm()) {
                 found = Fault::Guard;
             }
-            face_leans_past_surface = face_leans_past_surface ||
-                                      face_normal.dot(r.normal) <= sin_deg(r.margin_deg);
+            face_leans_past_surface = face_leans_past_surface || face_normal.dot(r.normal) <= min_cosine;
         }
         if (!face_leans_past_surface && n.dot(face_normal) <= 0.0) return Fault::Guard;
         return found;
@@ -248,12 +249,12 @@ struct Pieces {
 /// once stay a complete list.
 class Clearance {
 public:
-    Clearance(const Mesh& mesh, const std::vector<Vec3>& face_normals, const SharpPoints& p,
-              const PieceJudge& judge, std::span<const Index> touched)
+    Clearance(const Mesh& mesh, const Connectivity& connectivity,
+              const std::vector<Vec3>& face_normals, const SharpPoints& p, const PieceJudge& judge,
+              std::span<const Index> touched)
         : mesh_(mesh), face_normals_(face_normals), p_(p), judge_(judge),
-          number_(mesh.face_count(), kNoIndex), pieces_(touched.size()),
-          nearby_(mesh, touched, hull_boxes(touched)) {
-        for (std::size_t i = 0; i < touched.size(); ++i) number_[touched[i]] = static_cast<Index>(i);
+          number_(numbers_of(mesh, touched)), pieces_(touched.size()),
+          nearby_(mesh, connectivity, touched, number_, hull_boxes(touched)) {
         tbb::parallel_for(std::size_t{0}, touched.size(), [&](std::size_t i) { refresh(touched[i]); });
     }
 
@@ -318,6 +319,11 @@ private:
         return true;
     }
 
+    static std::vector<Index> numbers_of(const Mesh& mesh, std::span<const Index> touched) {
+        std::vector<Index> number(mesh.face_count(), kNoIndex);
+        for (std::size_t i = 0; i < touched.size(); ++i) number[touched[i]] = static_cast<Index>(i);
+        return number;
+    }
     IdTriangle triangle_of(const Triangle& t) const {
         const SplitVertices& ids = judge_.ids();
         return IdTriangle::make(t, ids.position(t[0]), ids.position(t[1]), ids.position(t[2]));
@@ -470,7 +476,8 @@ void queue_faces_across(const Connectivity& c, Index f, Worklist& work) {
 /// faces across its edges, whose split changed too. Repairs only drop points or move an edge's
 /// point onto a corner point once, so it ends.
 void drop_points_of_faulty_pieces(const Mesh& mesh, const Connectivity& c,
-                                  const PieceJudge& judge, SharpPoints& p, Dropped& dropped) {
+                                  const PieceJudge& judge, std::span<const Index> touched,
+                                  SharpPoints& p, Dropped& dropped) {
     auto fault_of = [&](Index f) {
         Fault worst = Fault::None;
         emit_pieces(mesh, p, judge, f, [&](Index a, Index b, Index cc) {
@@ -480,7 +487,6 @@ void drop_points_of_faulty_pieces(const Mesh& mesh, const Connectivity& c,
         return worst;
     };
     auto is_sound = [&](Index f) { return fault_of(f) == Fault::None; };
-    const std::vector<Index> touched = faces_with_points(mesh, p);
     Worklist work(mesh.face_count(), touched);
     while (!work.empty()) {
         const Index f = work.pop();
@@ -498,9 +504,12 @@ void drop_points_of_faulty_pieces(const Mesh& mesh, const Connectivity& c,
 /// pieces that changed.
 void drop_points_of_meeting_pieces(const Mesh& mesh, const Connectivity& c,
                                    const std::vector<Vec3>& face_normals, const PieceJudge& judge,
-                                   SharpPoints& p, Dropped& dropped) {
-    const std::vector<Index> touched = faces_with_points(mesh, p);
-    Clearance clearance(mesh, face_normals, p, judge, touched);
+                                   std::span<const Index> first_touched, SharpPoints& p,
+                                   Dropped& dropped) {
+    std::vector<Index> touched;
+    std::copy_if(first_touched.begin(), first_touched.end(), std::back_inserter(touched),
+                 [&](Index f) { return has_points(p, f); });
+    Clearance clearance(mesh, c, face_normals, p, judge, touched);
     std::vector<std::uint8_t> verdict_is_current(mesh.face_count(), 0), first_clear(mesh.face_count(), 0);
     tbb::parallel_for(std::size_t{0}, touched.size(), [&](std::size_t i) {
         first_clear[touched[i]] = clearance.stored_pieces_are_clear(touched[i], true);
@@ -564,9 +573,10 @@ Mesh split_band_triangles(const Mesh& mesh, const Connectivity& connectivity,
     const SplitVertices ids(mesh, points);
     const ReferenceNormals reference{feature_normals, vertex_normals};
     const PieceJudge judge(mesh, face_normals, reference, ids, spike_angle_deg);
+    const std::vector<Index> touched = faces_with_points(mesh, points);
     Dropped dropped;
-    drop_points_of_faulty_pieces(mesh, connectivity, judge, points, dropped);
-    drop_points_of_meeting_pieces(mesh, connectivity, face_normals, judge, points, dropped);
+    drop_points_of_faulty_pieces(mesh, connectivity, judge, touched, points, dropped);
+    drop_points_of_meeting_pieces(mesh, connectivity, face_normals, judge, touched, points, dropped);
     report.refused_by_quality = dropped.quality;
     report.refused_by_guard = dropped.guard;
 
