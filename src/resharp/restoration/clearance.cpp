@@ -240,14 +240,28 @@ struct SearchMarks {
         : face(faces, kNoIndex), vertex(vertices, kNoIndex) {}
 };
 
-/// Appends to `out` (touched number i, face) for each face whose box meets box i, found by a
-/// search from face f across the vertices of faces that meet it.
+/// Whether untouched face g lies beyond the cap plane of touched face f, but for f's vertices.
+bool lies_beyond_cap(const Mesh& mesh, Index f, const TouchedFace& touched, Index g) {
+    if (touched.cap_normal.isZero(0.0)) return false;
+    const Triangle& own = mesh.triangles[f];
+    for (Index v : mesh.triangles[g]) {
+        if (v == own[0] || v == own[1] || v == own[2]) continue;
+        if (touched.cap_normal.dot(mesh.positions[v]) >= touched.cap_offset - touched.tolerance) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/// Appends to `out` (touched number i, face) for each face near touched face f (number i; see
+/// NearbyFaces), found by a search from f across the vertices of faces that meet its box.
 void search_near(const Mesh& mesh, const Connectivity& connectivity, Index f, Index i,
-                 std::span<const Index> number, std::span<const Box3> boxes, SearchMarks& marks,
-                 std::vector<std::pair<Index, Index>>& out) {
+                 std::span<const Index> number, std::span<const TouchedFace> faces,
+                 SearchMarks& marks, std::vector<std::pair<Index, Index>>& out) {
+    const Box3& own_box = faces[i].box;
     // The search goes on from vertices within the box widened by its own size: a face meeting
     // the box with no vertex in that reach would be longer than twice the box.
-    const Box3 reach(boxes[i].min() - boxes[i].sizes(), boxes[i].max() + boxes[i].sizes());
+    const Box3 reach(own_box.min() - own_box.sizes(), own_box.max() + own_box.sizes());
     marks.face[f] = i;
     marks.frontier.clear();
     for (Index v : mesh.triangles[f]) {
@@ -258,9 +272,9 @@ void search_near(const Mesh& mesh, const Connectivity& connectivity, Index f, In
         for (Index g : connectivity.faces_around(marks.frontier[next])) {
             if (marks.face[g] == i) continue;
             marks.face[g] = i;
-            const Box3 box = number[g] != kNoIndex ? boxes[number[g]] : box_of(mesh, g);
-            if (!box.intersects(boxes[i])) continue;
-            out.emplace_back(i, g);
+            const bool is_touched = number[g] != kNoIndex;
+            if (!(is_touched ? faces[number[g]].box : box_of(mesh, g)).intersects(own_box)) continue;
+            if (is_touched || !lies_beyond_cap(mesh, f, faces[i], g)) out.emplace_back(i, g);
             for (Index v : mesh.triangles[g]) {
                 if (marks.vertex[v] == i || !reach.contains(mesh.positions[v])) continue;
                 marks.vertex[v] = i;
@@ -274,7 +288,7 @@ void search_near(const Mesh& mesh, const Connectivity& connectivity, Index f, In
 
 NearbyFaces::NearbyFaces(const Mesh& mesh, const Connectivity& connectivity,
                          std::span<const Index> touched, std::span<const Index> number,
-                         std::span<const Box3> boxes) {
+                         std::span<const TouchedFace> faces) {
     // Each touched face searches its own surroundings, in parallel, in chunks whose results are
     // joined in order (the same lists on any thread count).
     constexpr std::size_t kChunk = 256;
@@ -284,7 +298,7 @@ NearbyFaces::NearbyFaces(const Mesh& mesh, const Connectivity& connectivity,
         SearchMarks& mine = marks.local();
         const std::size_t end = std::min(touched.size(), (chunk + 1) * kChunk);
         for (std::size_t i = chunk * kChunk; i < end; ++i) {
-            search_near(mesh, connectivity, touched[i], static_cast<Index>(i), number, boxes,
+            search_near(mesh, connectivity, touched[i], static_cast<Index>(i), number, faces,
                         mine, found[chunk]);
         }
     });

@@ -175,12 +175,10 @@ private:
 /// Emits the pieces of face f, counter-clockwise like the face. With a corner point: a fan
 /// around it (Fig. 7b). Otherwise: an ear at each corner whose two edges were split (it lies on
 /// one feature, cut off by the new sharp edge), then the rest as one triangle or a quad split
-/// along a diagonal, never along an original edge: one whose pieces pass the judge if only one
-/// does, else the one that gives the better-shaped worse triangle.
+/// along the diagonal that gives the better-shaped worse triangle, never along an original edge.
 template <class Emit>
-void emit_pieces(const Mesh& mesh, const SharpPoints& p, const PieceJudge& judge, Index f,
+void emit_pieces(const Mesh& mesh, const SharpPoints& p, const SplitVertices& ids, Index f,
                  Emit&& emit) {
-    const SplitVertices& ids = judge.ids();
     const FacePolygon polygon = boundary_of(mesh, p, ids, f);
     if (p.corner_point[f] != kNoIndex) {
         // An edge split at the corner point itself (see repair_face) leaves its two pieces empty.
@@ -206,17 +204,13 @@ void emit_pieces(const Mesh& mesh, const SharpPoints& p, const PieceJudge& judge
         emit(rest.at(0), rest.at(1), rest.at(2));
         return;
     }
-    // A piece the judge refuses ranks below every sound one.
-    auto rank = [&](Index a, Index b, Index c) {
-        return judge.fault(f, a, b, c) == Fault::None ? shape_quality(ids, a, b, c) : -1.0;
-    };
     const bool may_use_02 = !(ids.is_original(rest.at(0)) && ids.is_original(rest.at(2)));
     const bool may_use_13 = !(ids.is_original(rest.at(1)) && ids.is_original(rest.at(3)));
-    const double rank_02 = std::min(rank(rest.at(0), rest.at(1), rest.at(2)),
-                                    rank(rest.at(0), rest.at(2), rest.at(3)));
-    const double rank_13 = std::min(rank(rest.at(1), rest.at(2), rest.at(3)),
-                                    rank(rest.at(1), rest.at(3), rest.at(0)));
-    if (may_use_02 && (!may_use_13 || rank_02 >= rank_13)) {
+    const double quality_02 = std::min(shape_quality(ids, rest.at(0), rest.at(1), rest.at(2)),
+                                       shape_quality(ids, rest.at(0), rest.at(2), rest.at(3)));
+    const double quality_13 = std::min(shape_quality(ids, rest.at(1), rest.at(2), rest.at(3)),
+                                       shape_quality(ids, rest.at(1), rest.at(3), rest.at(0)));
+    if (may_use_02 && (!may_use_13 || quality_02 >= quality_13)) {
         emit(rest.at(0), rest.at(1), rest.at(2));
         emit(rest.at(0), rest.at(2), rest.at(3));
     } else {
@@ -254,7 +248,7 @@ public:
               std::span<const Index> touched)
         : mesh_(mesh), face_normals_(face_normals), p_(p), judge_(judge),
           number_(numbers_of(mesh, touched)), pieces_(touched.size()),
-          nearby_(mesh, connectivity, touched, number_, hull_boxes(touched)) {
+          nearby_(mesh, connectivity, touched, number_, describe(touched)) {
         tbb::parallel_for(std::size_t{0}, touched.size(), [&](std::size_t i) { refresh(touched[i]); });
     }
 
@@ -278,7 +272,7 @@ public:
 private:
     Pieces current_pieces(Index f) const {
         Pieces out;
-        emit_pieces(mesh_, p_, judge_, f, [&](Index a, Index b, Index c) {
+        emit_pieces(mesh_, p_, judge_.ids(), f, [&](Index a, Index b, Index c) {
             const IdTriangle t = triangle_of(Triangle{a, b, c});
             out.piece[static_cast<std::size_t>(out.size++)] = {t.id, t.n};
         });
@@ -288,7 +282,7 @@ private:
     bool is_clear(Index f, const Pieces& mine, bool later_only) const {
         std::array<IdTriangle, 6> own;
         for (int i = 0; i < mine.size; ++i) own[i] = triangle_of(mine.piece[i]);
-        const double tolerance = kTouchRatio * std::sqrt(hull_box(f).sizes().squaredNorm());
+        const double tolerance = this->tolerance(f);
         for (int i = 0; i < mine.size; ++i) {
             for (int j = i + 1; j < mine.size; ++j) {
                 if (triangles_meet(own[i], own[j], tolerance)) return false;
@@ -336,17 +330,45 @@ private:
     Box3 hull_box(Index f) const {
         Box3 box;
         for (Index v : mesh_.triangles[f]) box.extend(mesh_.positions[v]);
-        for (int k = 0; k < 3; ++k) {
-            if (p_.edge_point[3 * f + k] != kNoIndex) box.extend(p_.points[p_.edge_point[3 * f + k]]);
-        }
-        if (p_.corner_point[f] != kNoIndex) box.extend(p_.points[p_.corner_point[f]]);
+        for_each_point(f, [&](const Vec3& x) { box.extend(x); });
         return box;
     }
-    std::vector<Box3> hull_boxes(std::span<const Index> touched) const {
-        std::vector<Box3> boxes;
-        boxes.reserve(touched.size());
-        for (Index f : touched) boxes.push_back(hull_box(f));
-        return boxes;
+    double tolerance(Index f) const {
+        return kTouchRatio * std::sqrt(hull_box(f).sizes().squaredNorm());
+    }
+    std::vector<TouchedFace> describe(std::span<const Index> touched) const {
+        std::vector<TouchedFace> faces(touched.size());
+        tbb::parallel_for(std::size_t{0}, touched.size(),
+                          [&](std::size_t i) { faces[i] = describe_face(touched[i]); });
+        return faces;
+    }
+    /// Its box and, when all its points lie clearly to one side of its plane, that plane.
+    TouchedFace describe_face(Index f) const {
+        TouchedFace face{hull_box(f), Vec3::Zero(), 0.0, tolerance(f)};
+        const Vec3& n = face_normals_[f];
+        const double offset = n.dot(mesh_.positions[mesh_.triangles[f][0]]);
+        int above = 0, below = 0, count = 0;
+        for_each_point(f, [&](const Vec3& x) {
+            const double height = n.dot(x) - offset;
+            above += height > face.tolerance;
+            below += height < -face.tolerance;
+            ++count;
+        });
+        if (above == count) {
+            face.cap_normal = n;
+            face.cap_offset = offset;
+        } else if (below == count) {
+            face.cap_normal = -n;
+            face.cap_offset = -offset;
+        }
+        return face;
+    }
+    template <class Visit>
+    void for_each_point(Index f, Visit&& visit) const {
+        for (int k = 0; k < 3; ++k) {
+            if (p_.edge_point[3 * f + k] != kNoIndex) visit(p_.points[p_.edge_point[3 * f + k]]);
+        }
+        if (p_.corner_point[f] != kNoIndex) visit(p_.points[p_.corner_point[f]]);
     }
 
     const Mesh& mesh_;
@@ -480,7 +502,7 @@ void drop_points_of_faulty_pieces(const Mesh& mesh, const Connectivity& c,
                                   SharpPoints& p, Dropped& dropped) {
     auto fault_of = [&](Index f) {
         Fault worst = Fault::None;
-        emit_pieces(mesh, p, judge, f, [&](Index a, Index b, Index cc) {
+        emit_pieces(mesh, p, judge.ids(), f, [&](Index a, Index b, Index cc) {
             const Fault fault = judge.fault(f, a, b, cc);
             if (worst == Fault::None || fault == Fault::Quality) worst = fault;
         });
@@ -517,7 +539,7 @@ void drop_points_of_meeting_pieces(const Mesh& mesh, const Connectivity& c,
     });
     auto is_sound = [&](Index f) {
         bool sound = true;
-        emit_pieces(mesh, p, judge, f, [&](Index a, Index b, Index cc) {
+        emit_pieces(mesh, p, judge.ids(), f, [&](Index a, Index b, Index cc) {
             sound = sound && judge.fault(f, a, b, cc) == Fault::None;
         });
         return sound && clearance.is_clear(f);
@@ -600,7 +622,7 @@ Mesh split_band_triangles(const Mesh& mesh, const Connectivity& connectivity,
             continue;
         }
         ++report.split_faces;
-        emit_pieces(mesh, points, judge, f, [&](Index a, Index b, Index c) {
+        emit_pieces(mesh, points, ids, f, [&](Index a, Index b, Index c) {
             out.triangles.push_back({output_id(a), output_id(b), output_id(c)});
             source_face.push_back(f);
         });
