@@ -71,6 +71,7 @@ nlohmann::json report_to_json(const RestoreReport& r) {
           {"refused_by_spike_test", r.refused_by_spike_test},
           {"refused_missing_normal", r.refused_missing_normal},
           {"refused_by_quality", r.refused_by_quality},
+          {"refused_by_guard", r.refused_by_guard},
           {"split_triangles", r.split_triangles}}},
         {"time_seconds", {{"stages", stages}, {"total", seconds(r.total_time)}}},
     };
@@ -92,7 +93,7 @@ std::string summarize(const RestoreReport& r, const std::string& input,
          << r.edge_points_inserted << " edge and " << r.corner_points_inserted
          << " corner points (refused: " << r.refused_by_flip_test << " by the flip test, "
          << r.refused_by_spike_test << " by the spike test, " << r.refused_by_quality
-         << " for quality, " << r.refused_missing_normal
+         << " for quality, " << r.refused_by_guard << " by the guard, " << r.refused_missing_normal
          << " without a feature normal). Input defects: " << describe_defects(r.input)
          << ". Time " << seconds(r.total_time) << " s (mesh "
          << seconds(r.time(Stage::MeshBuilding)) << ", edge segmentation " << edge_time

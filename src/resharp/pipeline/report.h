@@ -58,6 +58,8 @@ struct RestoreReport {
     std::size_t refused_by_spike_test = 0;   ///< §5.3
     std::size_t refused_missing_normal = 0;  ///< a vertex with no face on its own feature
     std::size_t refused_by_quality = 0;      ///< a split piece would flip or collapse
+    std::size_t refused_by_guard = 0;  ///< a split piece would turn against the face it
+                                       ///< replaces, or meet another triangle (docs/method.md)
     std::size_t split_triangles = 0;
 
     /// Wall time per stage, indexed by Stage.

@@ -111,7 +111,8 @@ public:
         timed(Stage::Split, [&] {
             SplitReport split;
             output = split_band_triangles(mesh_, connectivity, face_normals, normals,
-                                          vertex_normals, points, split, result_.source_face);
+                                          vertex_normals, points, split, result_.source_face,
+                                          options_.points.spike_angle_deg);
             record(split, points);
         });
         return output;
@@ -159,6 +160,7 @@ private:
 
     void record(const SplitReport& split, const SharpPoints& points) {
         report_.refused_by_quality = split.refused_by_quality;
+        report_.refused_by_guard = split.refused_by_guard;
         report_.split_triangles = split.split_faces;
         report_.corner_points_inserted = static_cast<std::size_t>(std::count_if(
             points.corner_point.begin(), points.corner_point.end(),

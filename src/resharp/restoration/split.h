@@ -15,23 +15,29 @@ namespace resharp {
 
 struct SplitReport {
     std::size_t refused_by_quality = 0;  ///< points dropped because a piece would flip or collapse
+    /// points dropped by the guard: a piece would turn against the face it replaces, stand
+    /// almost on edge across thin material, or meet another triangle
+    std::size_t refused_by_guard = 0;
     std::size_t split_faces = 0;         ///< input faces replaced by pieces
     std::size_t new_vertices = 0;
     std::size_t output_faces = 0;
 };
 
 /// Takes the mesh, its connectivity, unit face normals (#F), feature normals with their fit
-/// corrections (#V), plain vertex normals (#V, used where a vertex has no feature normal) and
-/// the points of
-/// place_sharp_points. First drops, repeatedly, points of faces whose pieces would collapse or
-/// turn against the surface they lie on, so that no output triangle is flipped; dropped points are removed from `points` (set to kNoIndex). Then builds the output:
-/// the input vertices first, unchanged and in order, then the surviving points in `points`
-/// order; each face in input order, either unchanged or replaced by its pieces.
-/// `source_face` receives, per output face, the input face it came from.
+/// corrections (#V), plain vertex normals (#V, used where a vertex has no feature normal), the
+/// points of place_sharp_points and the spike angle (degrees) of §5.3. First drops,
+/// repeatedly, points of faces whose pieces would collapse, turn against the surface they lie
+/// on or the face they replace, or meet another triangle of the output (the guard), so that no
+/// output triangle is flipped and no self-intersection is made; dropped points are removed from
+/// `points` (set to kNoIndex). Then builds the output: the input vertices first, unchanged and
+/// in order, then the surviving points in `points` order; each face in input order, either
+/// unchanged or replaced by its pieces. `source_face` receives, per output face, the input
+/// face it came from.
 Mesh split_band_triangles(const Mesh& mesh, const Connectivity& connectivity,
                           const std::vector<Vec3>& face_normals,
                           const FeatureNormals& feature_normals,
                           const std::vector<Vec3>& vertex_normals, SharpPoints& points,
-                          SplitReport& report, std::vector<Index>& source_face);
+                          SplitReport& report, std::vector<Index>& source_face,
+                          double spike_angle_deg = SharpPointOptions{}.spike_angle_deg);
 
 }  // namespace resharp
