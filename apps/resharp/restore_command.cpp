@@ -95,6 +95,10 @@ void bind_options(CLI::App& command, RestoreOptions& o) {
                        "corner points are refused when normals around the corner differ more "
                        "(degrees, paper 5.3)")
         ->capture_default_str();
+    command.add_flag("--check-clearance", o.check_clearance,
+                     "test every new piece against the triangles near it and drop points whose "
+                     "pieces would meet one: no self-intersection for certain, at about a third "
+                     "more time");
     command.add_option("--threads", o.threads, "worker threads, 0 for all cores; the output "
                                                "does not depend on it")
         ->capture_default_str();

@@ -76,11 +76,12 @@ TEST(Split, DropsAPointWhoseSplitWouldTurnAPieceOver) {
     EXPECT_EQ(out.triangles, s.mesh.triangles);
 }
 
-Mesh split(const Strip& s, SharpPoints& points, SplitReport& report) {
+Mesh split(const Strip& s, SharpPoints& points, SplitReport& report,
+           const SplitOptions& options = {}) {
     std::vector<Index> source;
     const std::vector<float> exact(s.mesh.vertex_count(), 0.0f);
     return split_band_triangles(s.mesh, s.connectivity, s.face_normals, {s.feature_normals, exact},
-                                s.feature_normals, points, report, source);
+                                s.feature_normals, points, report, source, options);
 }
 
 TEST(SplitGuard, RefusesAPieceTurnedAgainstTheFaceItReplaces) {
@@ -128,13 +129,18 @@ TEST(SplitGuard, RefusesAPointWhosePiecesWouldCutThroughANearbyFace) {
     pieces.triangles.push_back({2, 5, 6});
     ASSERT_FALSE(eval::self_intersecting_pairs(pieces).empty());
     ASSERT_TRUE(eval::self_intersecting_pairs(s.mesh).empty());
-    // ... so with the blocker there the point is refused, and nothing intersects.
+    // ... so with the blocker there and the clearance check on, the point is refused and
+    // nothing intersects; without the check (the default) it is kept.
     SharpPoints points = points_on_edge_a1_b0(s);
     SplitReport report;
-    const Mesh out = split(s, points, report);
+    const Mesh out = split(s, points, report, {.check_clearance = true});
     EXPECT_EQ(report.refused_by_guard, 1u);
     EXPECT_EQ(report.new_vertices, 0u);
     EXPECT_TRUE(eval::self_intersecting_pairs(out).empty());
+    SharpPoints unchecked_points = points_on_edge_a1_b0(s);
+    SplitReport unchecked;
+    split(s, unchecked_points, unchecked);
+    EXPECT_EQ(unchecked.new_vertices, 1u);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "resharp/restoration/band_classification.h"
 #include "resharp/restoration/feature_normals.h"
 #include "resharp/restoration/sharp_points.h"
+#include "resharp/restoration/split.h"
 #include "resharp/segmentation/edge_segmentation.h"
 #include "resharp/segmentation/feature_segmentation.h"
 
@@ -20,6 +21,8 @@ struct RestoreOptions {
     ClassificationOptions bands;          ///< paper §4 (end): which borders are sharp edges
     FeatureNormalOptions normals;         ///< paper §5.1: eq. 5.1 or a linear fit
     SharpPointOptions points;             ///< paper §5.3: spike angle
+    /// The split guard's clearance check (SplitOptions::check_clearance): off by default.
+    bool check_clearance = false;
     /// Worker threads; 0 means all cores. The output does not depend on it.
     int threads = 0;
     /// Also return the per-vertex and per-face labels of both segmentations (for viewing what

@@ -112,7 +112,8 @@ public:
             SplitReport split;
             output = split_band_triangles(mesh_, connectivity, face_normals, normals,
                                           vertex_normals, points, split, result_.source_face,
-                                          options_.points.spike_angle_deg);
+                                          {options_.points.spike_angle_deg,
+                                           options_.check_clearance});
             record(split, points);
         });
         return output;

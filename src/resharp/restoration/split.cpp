@@ -591,14 +591,17 @@ Mesh split_band_triangles(const Mesh& mesh, const Connectivity& connectivity,
                           const FeatureNormals& feature_normals,
                           const std::vector<Vec3>& vertex_normals, SharpPoints& points,
                           SplitReport& report, std::vector<Index>& source_face,
-                          double spike_angle_deg) {
+                          const SplitOptions& options) {
     const SplitVertices ids(mesh, points);
     const ReferenceNormals reference{feature_normals, vertex_normals};
-    const PieceJudge judge(mesh, face_normals, reference, ids, spike_angle_deg);
+    const PieceJudge judge(mesh, face_normals, reference, ids, options.spike_angle_deg);
     const std::vector<Index> touched = faces_with_points(mesh, points);
     Dropped dropped;
     drop_points_of_faulty_pieces(mesh, connectivity, judge, touched, points, dropped);
-    drop_points_of_meeting_pieces(mesh, connectivity, face_normals, judge, touched, points, dropped);
+    if (options.check_clearance) {
+        drop_points_of_meeting_pieces(mesh, connectivity, face_normals, judge, touched, points,
+                                      dropped);
+    }
     report.refused_by_quality = dropped.quality;
     report.refused_by_guard = dropped.guard;
 
