@@ -2,13 +2,11 @@
 // "resharp: error: <message naming the file and the place>" on stderr, and creates no output.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
+#include <filesystem>
 
+#include "cli_run.h"
 #include "io/bad_file_manifest.h"
 
 namespace resharp::cli {
@@ -16,30 +14,11 @@ namespace {
 
 using test::BadFileExpectation;
 
-struct CliRun {
-    int exit_code = -1;
-    std::string stderr_text;
-};
-
-// Built with append: GCC 12 warns falsely (-Wrestrict) on "'" + string.
-std::string quoted(const std::filesystem::path& path) {
-    std::string out(1, '\'');
-    out.append(path.string()).push_back('\'');
-    return out;
-}
-
 CliRun run_restore(const std::filesystem::path& input, const std::filesystem::path& output,
                    const std::filesystem::path& stderr_file) {
-    const std::string command = std::string(RESHARP_CLI) + " restore " + quoted(input) + " -o " +
-                                quoted(output) + " 2>" + quoted(stderr_file);
-    const int status = std::system(command.c_str());
-    CliRun run;
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream in(stderr_file);
-    std::stringstream text;
-    text << in.rdbuf();
-    run.stderr_text = text.str();
-    return run;
+    return run_shell(std::string(RESHARP_CLI) + " restore " + quoted(input) + " -o " +
+                         quoted(output),
+                     stderr_file);
 }
 
 class BadInput : public ::testing::TestWithParam<BadFileExpectation> {};

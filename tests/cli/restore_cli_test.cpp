@@ -2,38 +2,25 @@
 // the thread count, and no output at all when a stage fails or memory runs out.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "cli_run.h"
+
 namespace resharp::cli {
 namespace {
 
 namespace fs = std::filesystem;
 
-/// `path` in single quotes for the shell. Built with append: GCC 12 warns falsely (-Wrestrict)
-/// on "'" + string.
-std::string quoted(const fs::path& path) {
-    std::string text(1, '\'');
-    text.append(path.string()).push_back('\'');
-    return text;
-}
-
 /// The shipped example, quoted.
 std::string example() {
     return quoted(fs::path(RESHARP_SOURCE_DIR) / "examples" / "bracket.stl");
 }
-
-struct CliRun {
-    int exit_code = -1;
-    std::string stderr_text;
-};
 
 class RestoreCli : public ::testing::Test {
 protected:
@@ -48,17 +35,8 @@ protected:
 
     /// Runs `resharp restore ARGS` through the shell (so `prefix` can set limits).
     CliRun restore(const std::string& args, const std::string& prefix = "") const {
-        const fs::path err = dir_ / "stderr.txt";
-        const std::string command =
-            prefix + std::string(RESHARP_CLI) + " restore " + args + " 2>" + quoted(err);
-        const int status = std::system(command.c_str());
-        CliRun run;
-        run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-        std::ifstream in(err);
-        std::stringstream text;
-        text << in.rdbuf();
-        run.stderr_text = text.str();
-        return run;
+        return run_shell(prefix + std::string(RESHARP_CLI) + " restore " + args,
+                         dir_ / "stderr.txt");
     }
     /// The scratch file `name`, quoted for the shell.
     std::string path(const std::string& name) const { return quoted(dir_ / name); }

@@ -1,0 +1,41 @@
+#pragma once
+/// Running the real `resharp` executable from a test, through the shell.
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace resharp::cli {
+
+struct CliRun {
+    int exit_code = -1;
+    std::string stderr_text;
+};
+
+/// `path` in single quotes for the shell. Built with append: GCC 12 warns falsely (-Wrestrict)
+/// on "'" + string.
+inline std::string quoted(const std::filesystem::path& path) {
+    std::string text(1, '\'');
+    text.append(path.string()).push_back('\'');
+    return text;
+}
+
+/// Runs `command` (a shell line, without redirection) with its stderr sent to `stderr_file`;
+/// gives the exit code (-1 if it did not exit normally) and what it wrote on stderr.
+inline CliRun run_shell(const std::string& command, const std::filesystem::path& stderr_file) {
+    const std::string line = command + " 2>" + quoted(stderr_file);
+    const int status = std::system(line.c_str());
+    CliRun run;
+    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream in(stderr_file);
+    std::stringstream text;
+    text << in.rdbuf();
+    run.stderr_text = text.str();
+    return run;
+}
+
+}  // namespace resharp::cli
