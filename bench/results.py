@@ -35,7 +35,7 @@ VARIANTS = [  # (row name, extra evaluate flags)
 EDGE_SEG = ["curvature", "edge segmentation"]
 FEATURE_SEG = ["feature segmentation"]
 RESTORATION = ["classification", "feature normals", "sharp points", "split"]
-CAUSES = ["no_feature_patch", "same_patch", "no_edge_vertex", "corner_not_detected",
+CAUSES = ["beyond_chord", "no_feature_patch", "same_patch", "no_edge_vertex", "corner_not_detected",
           "not_detected", "not_inserted", "placed_far"]
 
 
@@ -156,13 +156,18 @@ def causes_table(results):
 
 
 def goals_table(results):
-    lines = ["| part | goal | ours | met | flipped | self-intersections |",
-             "| --- | --- | --- | --- | --- | --- |"]
+    lines = ["| part | goal | ours | met | ideal points beyond their chord | ours within reach "
+             "| exact normals within reach | flipped | self-intersections |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     for part, r in results.items():
         j, goal = r["rows"]["ours"], GOALS[part]
         rate = 100 * j["restoration_rate"]
         met = "-" if goal is None else ("yes" if rate >= goal else "no")
+        ip = j["ideal_points"]
+        beyond = f"{ip['beyond_chord']} of {ip['edges'] + ip['corners']}"
+        exact = r["rows"]["exact normals (placement ceiling)"]["restoration_rate_within_reach"]
         lines.append(f"| {part} | {'-' if goal is None else f'>= {goal}%'} | {rate:.2f}% | {met} "
+                     f"| {beyond} | {pct(j['restoration_rate_within_reach'])}% | {pct(exact)}% "
                      f"| {j['flipped_triangles']} | {j['self_intersections']} |")
     return "\n".join(lines)
 

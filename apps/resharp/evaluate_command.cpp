@@ -263,12 +263,15 @@ void run_evaluate(EvaluateArguments args) {
     j["restoration_rate"] = score.rate;
     j["restoration_rate_edges"] = score.rate_edges;
     j["restoration_rate_corners"] = score.rate_corners;
+    j["restoration_rate_within_reach"] = score.rate_within_reach;
     j["false_insertions"] = score.false_insertions;
     j["max_new_vertex_distance"] = score.max_new_vertex_distance;
     j["ideal_points"] = {{"edges", score.ideal_edges},
                          {"corners", score.ideal_corners},
                          {"restored_edges", score.restored_edges},
                          {"restored_corners", score.restored_corners},
+                         {"beyond_chord", score.beyond_chord},
+                         {"restored_beyond_chord", score.restored_beyond_chord},
                          {"new_vertices", score.new_vertices}};
     j["miss_causes"] = to_json(causes);
     j["detection_source"] = restored.detection_source;
@@ -321,7 +324,10 @@ void run_evaluate(EvaluateArguments args) {
     std::ostringstream s;
     s << "restoration rate " << score.rate * 100 << " % (edges " << score.restored_edges << "/"
       << score.ideal_edges << ", corners " << score.restored_corners << "/" << score.ideal_corners
-      << "), false insertions " << score.false_insertions << ", flipped "
+      << "), " << score.rate_within_reach * 100 << " % of the "
+      << score.ideal_edges + score.ideal_corners - score.beyond_chord
+      << " points within reach of an edge split, false insertions " << score.false_insertions
+      << ", flipped "
       << j["flipped_triangles"] << ", self-intersections " << valid_out.self_intersections
       << " (input " << valid_in.self_intersections << ")\n";
     std::cerr << s.str();

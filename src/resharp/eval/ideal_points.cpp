@@ -15,6 +15,30 @@ bool is_sharp_junction(const Oracle& o, Index u, Index v, double min_cosine) {
     return o.surfaces[u] != o.surfaces[v] && o.normals[u].dot(o.normals[v]) < min_cosine;
 }
 
+/// True when p, projected along the normal of face f, falls inside f (edges included).
+bool lies_over_face(const Mesh& mesh, Index f, const Vec3& p) {
+    const Triangle& t = mesh.triangles[f];
+    const Vec3& a = mesh.positions[t[0]];
+    const Vec3& b = mesh.positions[t[1]];
+    const Vec3& c = mesh.positions[t[2]];
+    const Vec3 n = (b - a).cross(c - a);
+    const double area2 = n.squaredNorm();
+    if (area2 == 0.0) return false;
+    // Signed barycentric coordinates of the projection, scaled by the squared doubled area.
+    return (c - b).cross(p - b).dot(n) >= 0.0 && (a - c).cross(p - c).dot(n) >= 0.0 &&
+           (b - a).cross(p - a).dot(n) >= 0.0;
+}
+
+bool beyond_chord(const Mesh& mesh, const Connectivity& c, const Oracle& o, Index h,
+                  const Vec3& m) {
+    const Index u = tail_vertex(mesh, h), v = head_vertex(mesh, h);
+    if (passes_flip_test(mesh.positions[u], o.normals[u], mesh.positions[v], o.normals[v])) {
+        return false;
+    }
+    return !lies_over_face(mesh, face_of(h), m) &&
+           (c.twin[h] == kNoIndex || !lies_over_face(mesh, face_of(c.twin[h]), m));
+}
+
 }  // namespace
 
 std::vector<IdealPoint> find_ideal_points(const Mesh& mesh, const Oracle& oracle,
@@ -30,7 +54,7 @@ std::vector<IdealPoint> find_ideal_points(const Mesh& mesh, const Oracle& oracle
                                   oracle.normals[v]);
         if (m) {
             points.push_back({*m, IdealKind::Edge, face_of(h), {u, v, kNoIndex},
-                              c.twin[h] == kNoIndex});
+                              c.twin[h] == kNoIndex, beyond_chord(mesh, c, oracle, h, *m)});
         }
     }
     for (Index f = 0; f < mesh.face_count(); ++f) {

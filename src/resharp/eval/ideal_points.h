@@ -28,6 +28,11 @@ struct IdealPoint {
     Index face = kNoIndex;          ///< a face holding the crossing edge, or the corner triangle
     Index vertices[3] = {kNoIndex, kNoIndex, kNoIndex};  ///< edge: two, corner: three
     bool on_boundary = false;  ///< a crossing edge with one face: left alone by restoration
+    /// A crossing edge whose exact tangent planes meet beyond its chord: eq. 5.4 fails even with
+    /// the exact normals, and the point lies over neither face of the edge. Splitting the edge
+    /// there folds its faces, so no restoration that splits crossing edges (the paper's §5.2)
+    /// can put it back; the crossing runs nearly along the sharp edge rather than across it.
+    bool beyond_chord = false;
 };
 
 struct IdealPointOptions {
@@ -37,7 +42,8 @@ struct IdealPointOptions {
 };
 
 /// Every crossing edge (a mesh edge at a sharp junction) and every corner triangle (three
-/// vertices on three surfaces, pairwise at sharp junctions) of `mesh`, with its ideal point.
+/// vertices on three surfaces, pairwise at sharp junctions) of `mesh`, with its ideal point and
+/// whether that point lies beyond the edge's chord.
 /// Edges come in order of their lowest half-edge, then corners in face order. Junctions whose
 /// equations have no single solution (parallel normals) are left out.
 std::vector<IdealPoint> find_ideal_points(const Mesh& mesh, const Oracle& oracle,

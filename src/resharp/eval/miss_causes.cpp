@@ -60,6 +60,7 @@ std::optional<MissCause> edge_detection_cause(const Segmentation& s, const Ideal
 
 std::string_view miss_cause_name(MissCause cause) {
     switch (cause) {
+        case MissCause::BeyondChord: return "beyond_chord";
         case MissCause::NoFeaturePatch: return "no_feature_patch";
         case MissCause::SamePatch: return "same_patch";
         case MissCause::NoEdgeVertex: return "no_edge_vertex";
@@ -87,7 +88,9 @@ MissCauses find_miss_causes(const Mesh& input, const Mesh& output,
         if (p.on_boundary || ideal_distance[i] <= tolerance) continue;
         const bool is_corner = p.kind == IdealKind::Corner;
         std::optional<MissCause> cause;
-        if (is_corner && !segmentation.face_role.empty() &&
+        if (p.beyond_chord) {
+            cause = MissCause::BeyondChord;
+        } else if (is_corner && !segmentation.face_role.empty() &&
             segmentation.face_role[p.face] != BandRole::Corner) {
             cause = MissCause::CornerNotDetected;
         } else if (!is_corner) {

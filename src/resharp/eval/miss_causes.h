@@ -15,6 +15,7 @@ namespace resharp::eval {
 
 /// The causes, in the order the pipeline meets them.
 enum class MissCause {
+    BeyondChord,       ///< the ideal point lies beyond the edge's chord: no split reaches it
     NoFeaturePatch,    ///< a vertex of the crossing edge joined no feature patch (§4)
     SamePatch,         ///< both vertices joined one feature patch (§4 merged or grew across)
     NoEdgeVertex,      ///< two patches, but neither vertex is an edge vertex (§3 missed it)
@@ -24,7 +25,7 @@ enum class MissCause {
                        ///< test, or no feature normal)
     PlacedFar,         ///< a point was inserted there, farther than tau (feature normals off)
 };
-inline constexpr std::size_t kMissCauseCount = 7;
+inline constexpr std::size_t kMissCauseCount = 8;
 
 std::string_view miss_cause_name(MissCause cause);
 

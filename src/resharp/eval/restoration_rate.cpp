@@ -70,6 +70,8 @@ RestorationScore score_restoration(const Mesh& input, const Mesh& output,
         if (p.kind == IdealKind::Edge) {
             ++s.ideal_edges;
             s.restored_edges += restored;
+            s.beyond_chord += p.beyond_chord;
+            s.restored_beyond_chord += p.beyond_chord && restored;
         } else {
             ++s.ideal_corners;
             s.restored_corners += restored;
@@ -78,6 +80,9 @@ RestorationScore score_restoration(const Mesh& input, const Mesh& output,
     s.rate = rate(s.restored_edges + s.restored_corners, s.ideal_edges + s.ideal_corners);
     s.rate_edges = rate(s.restored_edges, s.ideal_edges);
     s.rate_corners = rate(s.restored_corners, s.ideal_corners);
+    s.rate_within_reach =
+        rate(s.restored_edges + s.restored_corners - s.restored_beyond_chord,
+             s.ideal_edges + s.ideal_corners - s.beyond_chord);
 
     // New vertices to ideal points and to the exact surface.
     const UniformGrid ideal_grid = grid_over(counted, h);

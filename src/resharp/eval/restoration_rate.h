@@ -24,6 +24,13 @@ struct RestorationScore {
     double rate = 1.0;          ///< (restored edges + corners) / (ideal edges + corners); 1 if none
     double rate_edges = 1.0;    ///< restored_edges / ideal_edges; 1 if none
     double rate_corners = 1.0;  ///< restored_corners / ideal_corners; 1 if none
+    /// Ideal edge points beyond their chord (IdealPoint::beyond_chord), and how many of them a
+    /// new vertex happens to lie near all the same.
+    std::size_t beyond_chord = 0;
+    std::size_t restored_beyond_chord = 0;
+    /// The rate over the ideal points not beyond their chord: what a restoration that splits
+    /// crossing edges can reach at most is 1; 1 if none.
+    double rate_within_reach = 1.0;
     std::size_t new_vertices = 0;      ///< output vertices after the input's
     std::size_t false_insertions = 0;  ///< new vertices farther than tau from every ideal point
     /// mm: the largest distance of a new vertex from the nearest exact sample, an upper bound on
