@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <string>
 
 #include "cli_run.h"
 #include "io/bad_file_manifest.h"
@@ -26,8 +28,12 @@ class BadInput : public ::testing::TestWithParam<BadFileExpectation> {};
 TEST_P(BadInput, ExitsTwoNamingFileAndPlaceAndWritesNothing) {
     const BadFileExpectation& e = GetParam();
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    // Flat, as in restore_cli_test.cpp, so that nothing is left behind in the temporary
+    // directory; a parameterised test's name holds a '/'.
+    std::string name = info->name();
+    std::replace(name.begin(), name.end(), '/', '_');
     const auto scratch = std::filesystem::temp_directory_path() /
-                         ("resharp_cli_tests_" + std::to_string(::getpid())) / info->name();
+                         ("resharp_cli_tests_" + std::to_string(::getpid()) + "_" + name);
     const auto out_dir = scratch / "out";
     std::filesystem::remove_all(scratch);
     std::filesystem::create_directories(out_dir);

@@ -26,8 +26,10 @@ class RestoreCli : public ::testing::Test {
 protected:
     void SetUp() override {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        // One flat directory per test: ctest runs each test in a process of its own, and a
+        // per-process parent directory would be left behind empty.
         dir_ = fs::temp_directory_path() /
-               ("resharp_restore_cli_" + std::to_string(::getpid())) / info->name();
+               ("resharp_restore_cli_" + std::to_string(::getpid()) + "_" + info->name());
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }
