@@ -205,20 +205,30 @@ def main():
     parser.add_argument("--parts", nargs="*", default=PARTS)
     parser.add_argument("--output", default=os.path.join(root, "docs", "results.md"))
     parser.add_argument("--raw", help="also write every JSON result here")
+    parser.add_argument("--from-raw", help="run nothing: write the page from a file that --raw "
+                        "wrote (after editing the template's analysis)")
     args = parser.parse_args()
-    exe = os.path.join(args.build, "resharp")
-    os.makedirs(args.scratch, exist_ok=True)
-    results = {p: evaluate_part(exe, root, args.scratch, p, args.runs) for p in args.parts}
+    if args.from_raw:
+        with open(args.from_raw) as f:
+            raw = json.load(f)
+    else:
+        exe = os.path.join(args.build, "resharp")
+        os.makedirs(args.scratch, exist_ok=True)
+        results = {p: evaluate_part(exe, root, args.scratch, p, args.runs) for p in args.parts}
+        raw = {"run": {"date": datetime.date.today().isoformat(), "machine": machine(),
+                       "commit": git_head(root), "runs": args.runs},
+               "results": results}
     if args.raw:
         with open(args.raw, "w") as f:
-            json.dump(results, f, indent=1)
-    settings = results[args.parts[0]]["rows"]["ours"]["settings"]
+            json.dump(raw, f, indent=1)
+    results, run = raw["results"], raw["run"]
+    settings = next(iter(results.values()))["rows"]["ours"]["settings"]
     template_path = os.path.join(root, "bench", "results_template.md")
     with open(template_path) as f:
         page = f.read()
     page = page.format(
-        date=datetime.date.today().isoformat(), machine=machine(), commit=git_head(root),
-        runs=args.runs, settings=json.dumps(settings), goals=goals_table(results),
+        date=run["date"], machine=run["machine"], commit=run["commit"],
+        runs=run["runs"], settings=json.dumps(settings), goals=goals_table(results),
         quality=quality_table(results), times=time_table(results, "times"),
         times_paper=time_table(results, "times_paper"), causes=causes_table(results))
     with open(args.output, "w") as f:
