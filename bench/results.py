@@ -6,7 +6,8 @@
 For each part it runs `resharp simulate` on examples/<part>/job.json, times `resharp restore
 --threads 1` (median of --runs runs, default options and --paper), and runs
 `resharp evaluate --restore` three times (ours, the paper's variant, exact normals). Python 3 stdlib
-only; every number in the page comes from these runs.
+only; every number in the page comes from these runs. `--raw FILE` keeps those runs;
+`--from-raw FILE` writes the page again from them, for edits to the template's analysis.
 """
 
 import argparse
