@@ -22,16 +22,15 @@ bool lies_over_face(const Mesh& mesh, Index f, const Vec3& p) {
     const Vec3& b = mesh.positions[t[1]];
     const Vec3& c = mesh.positions[t[2]];
     const Vec3 n = (b - a).cross(c - a);
-    const double area2 = n.squaredNorm();
-    if (area2 == 0.0) return false;
-    // Signed barycentric coordinates of the projection, scaled by the squared doubled area.
+    if (n.isZero(0.0)) return false;
+    // The signs of the projection's barycentric coordinates.
     return (c - b).cross(p - b).dot(n) >= 0.0 && (a - c).cross(p - c).dot(n) >= 0.0 &&
            (b - a).cross(p - a).dot(n) >= 0.0;
 }
 
-bool beyond_chord(const Mesh& mesh, const Connectivity& c, const Oracle& o, Index h,
-                  const Vec3& m) {
-    const Index u = tail_vertex(mesh, h), v = head_vertex(mesh, h);
+/// See IdealPoint::beyond_chord; m is the ideal point of half-edge h, from u to v.
+bool beyond_chord(const Mesh& mesh, const Connectivity& c, const Oracle& o, Index h, Index u,
+                  Index v, const Vec3& m) {
     if (passes_flip_test(mesh.positions[u], o.normals[u], mesh.positions[v], o.normals[v])) {
         return false;
     }
@@ -54,7 +53,7 @@ std::vector<IdealPoint> find_ideal_points(const Mesh& mesh, const Oracle& oracle
                                   oracle.normals[v]);
         if (m) {
             points.push_back({*m, IdealKind::Edge, face_of(h), {u, v, kNoIndex},
-                              c.twin[h] == kNoIndex, beyond_chord(mesh, c, oracle, h, *m)});
+                              c.twin[h] == kNoIndex, beyond_chord(mesh, c, oracle, h, u, v, *m)});
         }
     }
     for (Index f = 0; f < mesh.face_count(); ++f) {

@@ -13,7 +13,7 @@
 
 namespace resharp::eval {
 
-/// The causes, in the order the pipeline meets them.
+/// The causes, in the order the pipeline meets them, after the one no stage could help.
 enum class MissCause {
     BeyondChord,       ///< the ideal point lies beyond the edge's chord: no split reaches it
     NoFeaturePatch,    ///< a vertex of the crossing edge joined no feature patch (§4)

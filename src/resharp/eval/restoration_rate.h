@@ -28,8 +28,8 @@ struct RestorationScore {
     /// new vertex happens to lie near all the same.
     std::size_t beyond_chord = 0;
     std::size_t restored_beyond_chord = 0;
-    /// The rate over the ideal points not beyond their chord: what a restoration that splits
-    /// crossing edges can reach at most is 1; 1 if none.
+    /// The rate over the ideal points not beyond their chord, the only ones a restoration that
+    /// splits crossing edges can reach; 1 if none.
     double rate_within_reach = 1.0;
     std::size_t new_vertices = 0;      ///< output vertices after the input's
     std::size_t false_insertions = 0;  ///< new vertices farther than tau from every ideal point
