@@ -19,6 +19,7 @@
 #include "resharp/eval/detection.h"
 #include "resharp/eval/ideal_points.h"
 #include "resharp/eval/miss_causes.h"
+#include "resharp/eval/oracle_restoration.h"
 #include "resharp/eval/restoration_rate.h"
 #include "resharp/eval/surface_distance.h"
 #include "resharp/eval/validity.h"
@@ -39,6 +40,7 @@ struct EvaluateArguments {
     std::string input, oracle, job, output, segments, json;
     bool restore = false;        // run restore() here instead of reading --output
     bool exact_normals = false;  // with --restore: the oracle's normals replace eq. 5.1
+    bool oracle_bands = false;   // with --restore: the split alone, on the oracle's bands
     CurvatureFeature feature = CurvatureFeature::Magnitude;
     bool paper = false;          // with --restore: paper_variant() of the options
     double sample_pitch = 0.25;  // exact samples: ray grid pitch in h
@@ -217,6 +219,13 @@ Restored obtain_restored(const EvaluateArguments& args, const Mesh& input,
         }
         return r;
     }
+    if (args.oracle_bands) {
+        eval::OracleRestoration r = eval::restore_from_oracle(input, oracle, args.ideal);
+        if (!args.output.empty()) io::write_mesh(args.output, r.mesh);
+        Segmentation roles;
+        roles.face_role = std::move(r.bands.face_role);
+        return {std::move(r.mesh), std::move(roles), "the oracle (--oracle-bands)"};
+    }
     RestoreOptions options;
     options.edges.feature = args.feature;
     if (args.paper) options = paper_variant(options);
@@ -361,13 +370,24 @@ void add_evaluate_command(CLI::App& app) {
     const std::map<std::string, CurvatureFeature> features{
         {"magnitude", CurvatureFeature::Magnitude}, {"signed", CurvatureFeature::Signed}};
     command->add_option("--curvature-feature", args->feature, "with --restore: as restore's")
-        ->transform(CLI::CheckedTransformer(features, CLI::ignore_case));
+        ->transform(CLI::CheckedTransformer(features, CLI::ignore_case))
+        ->needs("--restore");
     command->add_flag("--paper", args->paper,
                       "with --restore: the paper's choice wherever resharp makes another, as "
-                      "restore's --paper");
+                      "restore's --paper")
+        ->needs("--restore");
     command->add_flag("--exact-normals", args->exact_normals,
                       "with --restore: the oracle's exact normals replace eq. 5.1 (the ceiling "
-                      "of the placement step)");
+                      "of the placement step)")
+        ->needs("--restore");
+    command->add_flag("--oracle-bands", args->oracle_bands,
+                      "with --restore: split the oracle's crossing edges and corner triangles "
+                      "with its exact normals, no segmentation (the ceiling of any restoration "
+                      "that splits crossing edges)")
+        ->excludes("--paper")
+        ->excludes("--exact-normals")
+        ->excludes("--curvature-feature")
+        ->needs("--restore");
     command->add_option("--sharp-angle", args->ideal.sharp_angle_deg,
                         "theta_s: normals further apart make a sharp junction (degrees)")
         ->capture_default_str();

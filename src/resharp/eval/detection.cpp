@@ -27,15 +27,9 @@ DetectionScore score(std::span<const BandRole> detected, std::span<const BandRol
 
 std::vector<BandRole> true_band_roles(const Mesh& mesh, const Oracle& oracle,
                                       const IdealPointOptions& options) {
-    if (oracle.normals.size() != mesh.vertex_count() ||
-        oracle.surfaces.size() != mesh.vertex_count()) {
-        throw InvalidInput("the oracle does not have one normal and surface per vertex");
-    }
+    check_oracle(oracle, mesh);
     const double min_cosine = std::cos(options.sharp_angle_deg * std::numbers::pi / 180.0);
-    auto sharp = [&](Index u, Index v) {
-        return oracle.surfaces[u] != oracle.surfaces[v] &&
-               oracle.normals[u].dot(oracle.normals[v]) < min_cosine;
-    };
+    auto sharp = [&](Index u, Index v) { return is_sharp_junction(oracle, u, v, min_cosine); };
     std::vector<BandRole> role(mesh.face_count(), BandRole::None);
     for (std::size_t f = 0; f < mesh.face_count(); ++f) {
         const Triangle& t = mesh.triangles[f];

@@ -4,16 +4,13 @@
 #include <limits>
 #include <numbers>
 
+#include "resharp/core/errors.h"
 #include "resharp/eval/uniform_grid.h"
 #include "resharp/mesh/connectivity.h"
 #include "resharp/restoration/sharp_points.h"
 
 namespace resharp::eval {
 namespace {
-
-bool is_sharp_junction(const Oracle& o, Index u, Index v, double min_cosine) {
-    return o.surfaces[u] != o.surfaces[v] && o.normals[u].dot(o.normals[v]) < min_cosine;
-}
 
 /// True when p, projected along the normal of face f, falls inside f (edges included).
 bool lies_over_face(const Mesh& mesh, Index f, const Vec3& p) {
@@ -40,8 +37,16 @@ bool beyond_chord(const Mesh& mesh, const Connectivity& c, const Oracle& o, Inde
 
 }  // namespace
 
+void check_oracle(const Oracle& oracle, const Mesh& mesh) {
+    if (oracle.normals.size() != mesh.vertex_count() ||
+        oracle.surfaces.size() != mesh.vertex_count()) {
+        throw InvalidInput("the oracle does not have one normal and surface per vertex");
+    }
+}
+
 std::vector<IdealPoint> find_ideal_points(const Mesh& mesh, const Oracle& oracle,
                                           const IdealPointOptions& options) {
+    check_oracle(oracle, mesh);
     const double min_cosine = std::cos(options.sharp_angle_deg * std::numbers::pi / 180.0);
     const Connectivity c = build_connectivity(mesh);
     std::vector<IdealPoint> points;

@@ -41,6 +41,16 @@ struct IdealPointOptions {
     double sharp_angle_deg = 30.0;
 };
 
+/// \throws InvalidInput unless the oracle has one normal and one surface per vertex of `mesh`.
+void check_oracle(const Oracle& oracle, const Mesh& mesh);
+
+/// True when vertices u and v meet at a sharp junction: they lie on different surfaces and
+/// the cosine between their exact normals is below `min_cosine` (the cosine of theta_s).
+inline bool is_sharp_junction(const Oracle& oracle, Index u, Index v, double min_cosine) {
+    return oracle.surfaces[u] != oracle.surfaces[v] &&
+           oracle.normals[u].dot(oracle.normals[v]) < min_cosine;
+}
+
 /// Every crossing edge (a mesh edge at a sharp junction) and every corner triangle (three
 /// vertices on three surfaces, pairwise at sharp junctions) of `mesh`, with its ideal point and
 /// whether that point lies beyond the edge's chord.

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "resharp/segmentation/feature_segmentation.h"
 
@@ -28,9 +29,7 @@ BandClassification classify_bands(const Mesh& mesh, const Connectivity& connecti
         if (nu.isZero(0.0) || nv.isZero(0.0)) return edge_vertex;
         return edge_vertex ? nu.dot(nv) <= smooth_cosine : nu.dot(nv) < max_cosine;
     };
-    BandClassification b;
-    const std::size_t nh = connectivity.twin.size();
-    b.is_crossing.assign(nh, 0);
+    std::vector<std::uint8_t> is_crossing(connectivity.twin.size(), 0);
     for (Index f = 0; f < mesh.face_count(); ++f) {
         const Triangle& t = mesh.triangles[f];
         for (Index k = 0; k < 3; ++k) {
@@ -47,14 +46,22 @@ BandClassification classify_bands(const Mesh& mesh, const Connectivity& connecti
             const bool confirmed = different_features && border_is_sharp(u, v);
             if (confirmed &&
                 !face_normals[f].isZero(0.0) && !face_normals[face_of(twin)].isZero(0.0)) {
-                b.is_crossing[h] = b.is_crossing[twin] = 1;
-                ++b.crossing_edges;
+                is_crossing[h] = is_crossing[twin] = 1;
             }
         }
     }
-    b.face_role.assign(mesh.face_count(), BandRole::None);
-    for (Index f = 0; f < mesh.face_count(); ++f) {
+    return classify_faces(std::move(is_crossing));
+}
+
+BandClassification classify_faces(std::vector<std::uint8_t> is_crossing) {
+    BandClassification b;
+    b.is_crossing = std::move(is_crossing);
+    const std::size_t faces = b.is_crossing.size() / 3;
+    b.face_role.assign(faces, BandRole::None);
+    std::size_t crossing_halves = 0;
+    for (Index f = 0; f < faces; ++f) {
         const int crossing = b.is_crossing[3 * f] + b.is_crossing[3 * f + 1] + b.is_crossing[3 * f + 2];
+        crossing_halves += crossing;
         if (crossing == 3) {
             b.face_role[f] = BandRole::Corner;
             ++b.corner_triangles;
@@ -63,6 +70,7 @@ BandClassification classify_bands(const Mesh& mesh, const Connectivity& connecti
             ++b.edge_triangles;
         }
     }
+    b.crossing_edges = crossing_halves / 2;
     return b;
 }
 

@@ -55,4 +55,10 @@ BandClassification classify_bands(const Mesh& mesh, const Connectivity& connecti
                                   const std::vector<Index>& vertex_patch,
                                   const ClassificationOptions& options = {});
 
+/// Takes per-half-edge crossing flags (#3F, set on both halves of each crossing edge, which must
+/// be manifold) and gives the classification they make: a face with one or two crossing edges is
+/// an edge triangle, with three a corner triangle. classify_bands() ends here; the evaluation
+/// builds the oracle's classification the same way.
+BandClassification classify_faces(std::vector<std::uint8_t> is_crossing);
+
 }  // namespace resharp
