@@ -1,5 +1,6 @@
 // `resharp restore` as a user runs it: outputs and report on success, the same bytes whatever
-// the thread count, and no output at all when a stage fails or memory runs out.
+// the thread count, and no output at all when a stage fails or memory runs out. Also
+// `resharp evaluate` on the simulated example, for what its reference rows promise.
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -35,10 +36,12 @@ protected:
     }
     void TearDown() override { fs::remove_all(dir_); }
 
-    /// Runs `resharp restore ARGS` through the shell (so `prefix` can set limits).
+    /// Runs `resharp ARGS` through the shell (so `prefix` can set limits).
+    CliRun resharp(const std::string& args, const std::string& prefix = "") const {
+        return run_shell(prefix + std::string(RESHARP_CLI) + " " + args, dir_ / "stderr.txt");
+    }
     CliRun restore(const std::string& args, const std::string& prefix = "") const {
-        return run_shell(prefix + std::string(RESHARP_CLI) + " restore " + args,
-                         dir_ / "stderr.txt");
+        return resharp("restore " + args, prefix);
     }
     /// The scratch file `name`, quoted for the shell.
     std::string path(const std::string& name) const { return quoted(dir_ / name); }
@@ -75,6 +78,36 @@ TEST_F(RestoreCli, RestoresTheExampleWithReportSegmentsAndSummary) {
                   report["restoration"]["edge_points_inserted"].get<int>() +
                   report["restoration"]["corner_points_inserted"].get<int>());
     EXPECT_TRUE(report["time_seconds"]["stages"].contains("split"));
+}
+
+// The split on the oracle's bands with exact normals (the ceiling of an edge split): the bracket
+// is all planes, so every crossing edge gets its ideal point and nothing folds.
+TEST_F(RestoreCli, EvaluatesTheSplitCeilingOfTheSimulatedBracket) {
+    const std::string job =
+        quoted(fs::path(RESHARP_SOURCE_DIR) / "examples" / "bracket" / "job.json");
+    const CliRun simulated = resharp("simulate " + job + " -o " + path("in.ply") +
+                                     " --oracle " + path("oracle.ply") + " -q");
+    ASSERT_EQ(simulated.exit_code, 0) << simulated.stderr_text;
+    const std::string evaluate =
+        "evaluate --input " + path("in.ply") + " --oracle " + path("oracle.ply") + " --job " + job;
+    const CliRun run = resharp(evaluate + " --restore --oracle-bands --json " + path("r.json"));
+    ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+    const auto r = nlohmann::json::parse(bytes_of(dir_ / "r.json"));
+    EXPECT_EQ(r["detection_source"], "the oracle (--oracle-bands)");
+    EXPECT_EQ(r["detection_precision"], 1.0);
+    EXPECT_EQ(r["detection_recall"], 1.0);
+    EXPECT_GT(r["ideal_points"]["edges"].get<int>(), 1000);
+    EXPECT_EQ(r["restoration_rate_edges"], 1.0);
+    EXPECT_EQ(r["false_insertions"], 0);
+    EXPECT_EQ(r["flipped_triangles"], 0);
+    EXPECT_EQ(r["self_intersections"], 0);
+
+    const CliRun without_restore =
+        resharp(evaluate + " --output " + path("in.ply") + " --oracle-bands");
+    EXPECT_EQ(without_restore.exit_code, 1);
+    EXPECT_NE(without_restore.stderr_text.find("--oracle-bands requires --restore"),
+              std::string::npos)
+        << without_restore.stderr_text;
 }
 
 TEST_F(RestoreCli, SameBytesWithOneThreadAndTwo) {

@@ -24,8 +24,8 @@ BandClassification bands_of(const Mesh& mesh, const Connectivity& connectivity,
             face_normals[face_of(twin)].isZero(0.0)) {
             continue;
         }
-        is_crossing[h] = is_sharp_junction(oracle, tail_vertex(mesh, h), head_vertex(mesh, h),
-                                           min_cosine);
+        is_crossing[h] =
+            is_sharp_junction(oracle, tail_vertex(mesh, h), head_vertex(mesh, h), min_cosine);
     }
     return classify_faces(std::move(is_crossing));
 }

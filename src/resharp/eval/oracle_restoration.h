@@ -21,8 +21,8 @@ BandClassification oracle_bands(const Mesh& mesh, const Oracle& oracle,
                                 const IdealPointOptions& options = {});
 
 struct OracleRestoration {
-    Mesh mesh;              ///< as restore() gives it: the input's vertices first, then new points
-    BandClassification bands;  ///< oracle_bands()
+    Mesh mesh;  ///< as restore() gives it: the input's vertices first, then new points
+    BandClassification bands;               ///< oracle_bands()
     std::size_t refused_by_flip_test = 0;   ///< crossing edges failing eq. 5.4 with exact normals
     std::size_t refused_by_spike_test = 0;  ///< corner triangles failing the spike test
     std::size_t refused_by_split = 0;       ///< points the split's quality checks and guard dropped

@@ -44,8 +44,8 @@ BandClassification classify_bands(const Mesh& mesh, const Connectivity& connecti
             // surfaces, whose border vertices have low curvature. Degenerate faces stay as they
             // are. Labels are checked first: they rule out almost every edge, and cheaply.
             const bool confirmed = different_features && border_is_sharp(u, v);
-            if (confirmed &&
-                !face_normals[f].isZero(0.0) && !face_normals[face_of(twin)].isZero(0.0)) {
+            if (confirmed && !face_normals[f].isZero(0.0) &&
+                !face_normals[face_of(twin)].isZero(0.0)) {
                 is_crossing[h] = is_crossing[twin] = 1;
             }
         }
@@ -60,7 +60,8 @@ BandClassification classify_faces(std::vector<std::uint8_t> is_crossing) {
     b.face_role.assign(faces, BandRole::None);
     std::size_t crossing_halves = 0;
     for (Index f = 0; f < faces; ++f) {
-        const int crossing = b.is_crossing[3 * f] + b.is_crossing[3 * f + 1] + b.is_crossing[3 * f + 2];
+        const int crossing =
+            b.is_crossing[3 * f] + b.is_crossing[3 * f + 1] + b.is_crossing[3 * f + 2];
         crossing_halves += crossing;
         if (crossing == 3) {
             b.face_role[f] = BandRole::Corner;
