@@ -1,9 +1,9 @@
 #pragma once
 /// The ceiling of the restoration itself: the split (paper §5.2-5.3) run on the oracle's crossing
 /// edges and corner triangles with the exact normals, so that neither segmentation nor normal
-/// estimation can lose a point. What it still misses, no restoration that splits crossing edges
-/// can put back with these points: ideal points beyond their chord (eq. 5.4 fails) and points the
-/// split's own checks drop.
+/// estimation can lose a point. What it still misses are ideal points beyond their chord (eq. 5.4
+/// fails even with exact normals: no edge split reaches them) and points the split's own
+/// checks drop.
 
 #include <vector>
 
