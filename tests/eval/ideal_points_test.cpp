@@ -6,19 +6,12 @@
 #include "resharp/eval/miss_causes.h"
 #include "resharp/eval/restoration_rate.h"
 
+#include "oracle_square.h"
+
 namespace resharp::eval {
 namespace {
 
-// The unit square on z = 0 cut along its diagonal (1, 2). Vertices 0 and 1 lie on surface 0
-// with exact normal n1, vertices 2 and 3 on surface 1 with n2, so the diagonal crosses.
-struct Square {
-    Mesh mesh{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0)}, {{0, 1, 2}, {1, 3, 2}}};
-    Oracle oracle;
-    Square(const Vec3& n1, const Vec3& n2) {
-        oracle.normals = {n1.normalized(), n1.normalized(), n2.normalized(), n2.normalized()};
-        oracle.surfaces = {0, 0, 1, 1};
-    }
-};
+using test::Square;
 
 IdealPoint diagonal_point(const std::vector<IdealPoint>& points) {
     const auto it = std::find_if(points.begin(), points.end(), [](const IdealPoint& p) {

@@ -6,20 +6,12 @@
 #include "resharp/eval/detection.h"
 #include "resharp/eval/oracle_restoration.h"
 #include "support/grid_shapes.h"
+#include "oracle_square.h"
 
 namespace resharp::eval {
 namespace {
 
-// The unit square on z = 0 cut along its diagonal (1, 2); vertices 0, 1 on surface 0 with
-// normal n1, vertices 2, 3 on surface 1 with n2 (as in ideal_points_test.cpp).
-struct Square {
-    Mesh mesh{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0)}, {{0, 1, 2}, {1, 3, 2}}};
-    Oracle oracle;
-    Square(const Vec3& n1, const Vec3& n2) {
-        oracle.normals = {n1.normalized(), n1.normalized(), n2.normalized(), n2.normalized()};
-        oracle.surfaces = {0, 0, 1, 1};
-    }
-};
+using test::Square;
 
 // Only the diagonal crosses: the sides (0, 2) and (1, 3) also join the two surfaces but have
 // one face each, and boundaries are left as they are.
