@@ -14,7 +14,8 @@ const Part& part(const std::string& name) {
         const std::string folder = std::string(root ? root : "examples") + "/" + name;
         slot = std::make_unique<Part>();
         slot->job = sim::read_job(folder + "/job.json");
-        slot->path = sim::read_gcode(slot->job.program, {.start_position = slot->job.start_position});
+        slot->path =
+            sim::read_gcode(slot->job.program, {.start_position = slot->job.start_position});
         slot->options.pitch = slot->job.pitch;
     }
     return *slot;

@@ -5,7 +5,6 @@
 // stage's inputs are computed once outside the timed loop.
 
 #include <benchmark/benchmark.h>
-
 #include <tbb/task_arena.h>
 
 #include "parts.h"
@@ -37,12 +36,12 @@ struct Stages {
     EdgeSegmentation edges = segment_edges(mesh, connectivity, curvatures, face_normals);
     FeatureSegmentation features =
         segment_features(mesh, connectivity, face_normals, edges.is_edge);
-    BandClassification bands =
-        classify_bands(mesh, connectivity, face_normals, edges.is_edge, features.face_patch,
-                       features.vertex_patch);
-    FeatureNormals normals = feature_normals(mesh, connectivity, face_normals,
-                                             features.face_patch, features.vertex_patch, bands);
-    SharpPoints points = place_sharp_points(mesh, connectivity, face_normals, bands, normals.normal);
+    BandClassification bands = classify_bands(mesh, connectivity, face_normals, edges.is_edge,
+                                              features.face_patch, features.vertex_patch);
+    FeatureNormals normals = feature_normals(mesh, connectivity, face_normals, features.face_patch,
+                                             features.vertex_patch, bands);
+    SharpPoints points =
+        place_sharp_points(mesh, connectivity, face_normals, bands, normals.normal);
 
     explicit Stages(const Mesh& m) : mesh(m) {}
 };
@@ -104,9 +103,9 @@ void BM_FeatureSegmentation(benchmark::State& state, const std::string& name) {
 
 void BM_Restoration(benchmark::State& state, const std::string& name) {
     run_single_threaded(state, name, [](const Stages& s) {
-        const BandClassification bands = classify_bands(s.mesh, s.connectivity, s.face_normals,
-                                                        s.edges.is_edge, s.features.face_patch,
-                                                        s.features.vertex_patch);
+        const BandClassification bands =
+            classify_bands(s.mesh, s.connectivity, s.face_normals, s.edges.is_edge,
+                           s.features.face_patch, s.features.vertex_patch);
         const auto normals = feature_normals(s.mesh, s.connectivity, s.face_normals,
                                              s.features.face_patch, s.features.vertex_patch, bands);
         SharpPoints points =
@@ -131,7 +130,7 @@ void BM_Restore(benchmark::State& state, const std::string& name) {
 
 }  // namespace
 
-#define RESHARP_PIPELINE_PART(name)                                                          \
+#define RESHARP_PIPELINE_PART(name)                                                              \
     BENCHMARK_CAPTURE(BM_Connectivity, name, std::string(#name))->Unit(benchmark::kMillisecond); \
     BENCHMARK_CAPTURE(BM_Diagnose, name, std::string(#name))->Unit(benchmark::kMillisecond);     \
     BENCHMARK_CAPTURE(BM_Normals, name, std::string(#name))->Unit(benchmark::kMillisecond);      \
@@ -142,7 +141,11 @@ void BM_Restore(benchmark::State& state, const std::string& name) {
         ->Unit(benchmark::kMillisecond);                                                         \
     BENCHMARK_CAPTURE(BM_Restoration, name, std::string(#name))->Unit(benchmark::kMillisecond);  \
     BENCHMARK_CAPTURE(BM_Restore, name, std::string(#name))                                      \
-        ->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()
+        ->ArgName("threads")                                                                     \
+        ->Arg(1)                                                                                 \
+        ->Arg(2)                                                                                 \
+        ->Unit(benchmark::kMillisecond)                                                          \
+        ->UseRealTime()
 
 RESHARP_PIPELINE_PART(mech);
 RESHARP_PIPELINE_PART(frogface);

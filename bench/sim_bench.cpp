@@ -38,7 +38,7 @@ void BM_Mesh(benchmark::State& state, const std::string& name) {
 
 }  // namespace
 
-#define RESHARP_SIM_PART(name)                                                              \
+#define RESHARP_SIM_PART(name)                                                               \
     BENCHMARK_CAPTURE(BM_Simulate, name, std::string(#name))->Unit(benchmark::kMillisecond); \
     BENCHMARK_CAPTURE(BM_Mesh, name, std::string(#name))->Unit(benchmark::kMillisecond)
 

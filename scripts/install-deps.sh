@@ -8,7 +8,7 @@ packages=(
     libeigen3-dev libtbb-dev libcli11-dev nlohmann-json3-dev
     libcgal-dev libgmp-dev libmpfr-dev
     libgtest-dev libgmock-dev libbenchmark-dev
-    clang libclang-rt-dev
+    clang clang-format libclang-rt-dev
     python3
 )
 

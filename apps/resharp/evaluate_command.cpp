@@ -7,11 +7,10 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <unordered_map>
-
-#include <nlohmann/json.hpp>
 
 #include "commands.h"
 #include "resharp/core/errors.h"
@@ -264,9 +263,9 @@ void run_evaluate(EvaluateArguments args) {
     const auto ideal = eval::find_ideal_points(input, oracle, args.ideal);
     const eval::RestorationScore score =
         eval::score_restoration(input, output, ideal, exact, args.restoration);
-    const eval::MissCauses causes = eval::find_miss_causes(
-        input, output, ideal, score.ideal_distance, args.restoration.tolerance * h,
-        restored.segmentation);
+    const eval::MissCauses causes =
+        eval::find_miss_causes(input, output, ideal, score.ideal_distance,
+                               args.restoration.tolerance * h, restored.segmentation);
 
     json j;
     j["restoration_rate"] = score.rate;
@@ -336,9 +335,8 @@ void run_evaluate(EvaluateArguments args) {
       << "), " << score.rate_within_reach * 100 << " % of the "
       << score.ideal_edges + score.ideal_corners - score.beyond_chord
       << " points within reach of an edge split, false insertions " << score.false_insertions
-      << ", flipped "
-      << j["flipped_triangles"] << ", self-intersections " << valid_out.self_intersections
-      << " (input " << valid_in.self_intersections << ")\n";
+      << ", flipped " << j["flipped_triangles"] << ", self-intersections "
+      << valid_out.self_intersections << " (input " << valid_in.self_intersections << ")\n";
     std::cerr << s.str();
 }
 
@@ -355,8 +353,10 @@ void add_evaluate_command(CLI::App& app) {
         ->required();
     command->add_option("--oracle", args->oracle, "its oracle PLY (resharp simulate --oracle)")
         ->required();
-    command->add_option("--job", args->job, "the job file the mesh was simulated from; its "
-                                            "surface is sampled again on a finer grid")
+    command
+        ->add_option("--job", args->job,
+                     "the job file the mesh was simulated from; its "
+                     "surface is sampled again on a finer grid")
         ->required();
     command->add_option("--output", args->output,
                         "the restored mesh (with --restore: where to write it, optional)");
@@ -372,39 +372,47 @@ void add_evaluate_command(CLI::App& app) {
     command->add_option("--curvature-feature", args->feature, "with --restore: as restore's")
         ->transform(CLI::CheckedTransformer(features, CLI::ignore_case))
         ->needs("--restore");
-    command->add_flag("--paper", args->paper,
-                      "with --restore: the paper's choice wherever resharp makes another, as "
-                      "restore's --paper")
+    command
+        ->add_flag("--paper", args->paper,
+                   "with --restore: the paper's choice wherever resharp makes another, as "
+                   "restore's --paper")
         ->needs("--restore");
-    command->add_flag("--exact-normals", args->exact_normals,
-                      "with --restore: the oracle's exact normals replace eq. 5.1 (the ceiling "
-                      "of the placement step)")
+    command
+        ->add_flag("--exact-normals", args->exact_normals,
+                   "with --restore: the oracle's exact normals replace eq. 5.1 (the ceiling "
+                   "of the placement step)")
         ->needs("--restore");
-    command->add_flag("--oracle-bands", args->oracle_bands,
-                      "with --restore: split the oracle's crossing edges and corner triangles "
-                      "with its exact normals, no segmentation (the ceiling of any restoration "
-                      "that splits crossing edges)")
+    command
+        ->add_flag("--oracle-bands", args->oracle_bands,
+                   "with --restore: split the oracle's crossing edges and corner triangles "
+                   "with its exact normals, no segmentation (the ceiling of any restoration "
+                   "that splits crossing edges)")
         ->excludes("--paper")
         ->excludes("--exact-normals")
         ->excludes("--curvature-feature")
         ->needs("--restore");
-    command->add_option("--sharp-angle", args->ideal.sharp_angle_deg,
-                        "theta_s: normals further apart make a sharp junction (degrees)")
+    command
+        ->add_option("--sharp-angle", args->ideal.sharp_angle_deg,
+                     "theta_s: normals further apart make a sharp junction (degrees)")
         ->capture_default_str();
-    command->add_option("--tolerance", args->restoration.tolerance,
-                        "tau in h: an ideal point is restored by a new vertex this near")
+    command
+        ->add_option("--tolerance", args->restoration.tolerance,
+                     "tau in h: an ideal point is restored by a new vertex this near")
         ->capture_default_str();
-    command->add_option("--sample-pitch", args->sample_pitch,
-                        "pitch of the ray grid sampling the exact surface and the meshes, in h")
+    command
+        ->add_option("--sample-pitch", args->sample_pitch,
+                     "pitch of the ray grid sampling the exact surface and the meshes, in h")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
     command->add_option("--grid-phase", args->grid_phase, "phase of that grid, as simulate's")
         ->capture_default_str();
-    command->add_option("--edge-radius", args->surface.edge_radius,
-                        "r of the edge-sample test in h (NDC: 0.256 h)")
+    command
+        ->add_option("--edge-radius", args->surface.edge_radius,
+                     "r of the edge-sample test in h (NDC: 0.256 h)")
         ->capture_default_str();
-    command->add_option("--edge-f1-threshold", args->surface.edge_f1_threshold,
-                        "Edge F-score distance threshold in h (NDC: 0.32 h)")
+    command
+        ->add_option("--edge-f1-threshold", args->surface.edge_f1_threshold,
+                     "Edge F-score distance threshold in h (NDC: 0.32 h)")
         ->capture_default_str();
     command->add_flag("-q,--quiet", args->quiet, "print no summary");
     command->callback([args] {

@@ -21,8 +21,9 @@ int fail(int code, const char* message) {
 
 int main(int argc, char** argv) {
     using namespace resharp::cli;
-    CLI::App app{"resharp: restores the sharp machined edges and corners that grid-based "
-                 "machining simulation turns into chamfer bands."};
+    CLI::App app{
+        "resharp: restores the sharp machined edges and corners that grid-based "
+        "machining simulation turns into chamfer bands."};
     app.footer(kExitCodeHelp);
     app.require_subcommand(1);
     add_restore_command(app);

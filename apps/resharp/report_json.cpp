@@ -44,8 +44,10 @@ nlohmann::json report_to_json(const RestoreReport& r) {
         stages[std::string(stage_name(static_cast<Stage>(s)))] = seconds(r.stage_time[s]);
     }
     return {
-        {"input", {{"vertices", r.input_vertices}, {"triangles", r.input_triangles},
-                   {"defects", defects_to_json(r.input)}}},
+        {"input",
+         {{"vertices", r.input_vertices},
+          {"triangles", r.input_triangles},
+          {"defects", defects_to_json(r.input)}}},
         {"output", {{"vertices", r.output_vertices}, {"triangles", r.output_triangles}}},
         {"edge_segmentation",
          {{"edge_vertices", r.edge_vertices},
@@ -77,8 +79,7 @@ nlohmann::json report_to_json(const RestoreReport& r) {
     };
 }
 
-std::string summarize(const RestoreReport& r, const std::string& input,
-                      const std::string& output) {
+std::string summarize(const RestoreReport& r, const std::string& input, const std::string& output) {
     const double edge_time = seconds(r.time(Stage::Curvature) + r.time(Stage::EdgeSegmentation));
     const double feature_time = seconds(r.time(Stage::FeatureSegmentation));
     const double restore_time =
@@ -94,11 +95,10 @@ std::string summarize(const RestoreReport& r, const std::string& input,
          << " corner points (refused: " << r.refused_by_flip_test << " by the flip test, "
          << r.refused_by_spike_test << " by the spike test, " << r.refused_by_quality
          << " for quality, " << r.refused_by_guard << " by the guard, " << r.refused_missing_normal
-         << " without a feature normal). Input defects: " << describe_defects(r.input)
-         << ". Time " << seconds(r.total_time) << " s (mesh "
-         << seconds(r.time(Stage::MeshBuilding)) << ", edge segmentation " << edge_time
-         << ", feature segmentation " << feature_time << ", restoration " << restore_time
-         << ").\n";
+         << " without a feature normal). Input defects: " << describe_defects(r.input) << ". Time "
+         << seconds(r.total_time) << " s (mesh " << seconds(r.time(Stage::MeshBuilding))
+         << ", edge segmentation " << edge_time << ", feature segmentation " << feature_time
+         << ", restoration " << restore_time << ").\n";
     return text.str();
 }
 

@@ -1,9 +1,8 @@
 #pragma once
 /// The restore report as JSON (`resharp restore --report`), and the one-paragraph summary.
 
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "resharp/pipeline/report.h"
 

@@ -1,7 +1,7 @@
 #include <iostream>
 #include <map>
-#include <optional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "commands.h"
@@ -30,77 +30,95 @@ struct RestoreArguments {
 void bind_options(CLI::App& command, RestoreOptions& o) {
     const std::map<std::string, CurvatureFeature> features{
         {"magnitude", CurvatureFeature::Magnitude}, {"signed", CurvatureFeature::Signed}};
-    command.add_option("--curvature-feature", o.edges.feature,
-                       "what k-means clusters: 'signed' (k1, k2) as the paper, or 'magnitude' "
-                       "(|k|min, |k|max), which keeps concave and convex edges together")
+    command
+        .add_option("--curvature-feature", o.edges.feature,
+                    "what k-means clusters: 'signed' (k1, k2) as the paper, or 'magnitude' "
+                    "(|k|min, |k|max), which keeps concave and convex edges together")
         ->transform(CLI::CheckedTransformer(features, CLI::ignore_case))
         ->option_text("{magnitude,signed}=magnitude");
     const std::map<std::string, NormalEstimate> estimates{
         {"fit", NormalEstimate::LinearFit}, {"angle-weighted", NormalEstimate::AngleWeighted}};
-    command.add_option("--normals", o.normals.estimate,
-                       "feature normals at band vertices: 'angle-weighted' is eq. 5.1 as the "
-                       "paper; 'fit' extrapolates the feature's face normals to the vertex, "
-                       "exact on planes and better on curved features")
+    command
+        .add_option("--normals", o.normals.estimate,
+                    "feature normals at band vertices: 'angle-weighted' is eq. 5.1 as the "
+                    "paper; 'fit' extrapolates the feature's face normals to the vertex, "
+                    "exact on planes and better on curved features")
         ->transform(CLI::CheckedTransformer(estimates, CLI::ignore_case))
         ->option_text("{fit,angle-weighted}=fit");
-    command.add_option("--max-fit-correction", o.normals.max_fit_correction_deg,
-                       "a fitted normal further than this (degrees) from eq. 5.1's is not used")
+    command
+        .add_option("--max-fit-correction", o.normals.max_fit_correction_deg,
+                    "a fitted normal further than this (degrees) from eq. 5.1's is not used")
         ->capture_default_str();
-    command.add_option("--max-fit-residual", o.normals.max_fit_residual_deg,
-                       "faces whose normal is further than this (degrees) from the first fit, such "
-                       "as faces beyond a scallop cusp, are left out of the second; 180 keeps all")
+    command
+        .add_option("--max-fit-residual", o.normals.max_fit_residual_deg,
+                    "faces whose normal is further than this (degrees) from the first fit, such "
+                    "as faces beyond a scallop cusp, are left out of the second; 180 keeps all")
         ->capture_default_str();
-    command.add_option("--kmeans-tolerance", o.edges.kmeans_tolerance,
-                       "eps_K (paper eq. 3.2): k-means stops when centres move less (1/length)")
+    command
+        .add_option("--kmeans-tolerance", o.edges.kmeans_tolerance,
+                    "eps_K (paper eq. 3.2): k-means stops when centres move less (1/length)")
         ->capture_default_str();
-    command.add_option("--max-kmeans-iterations", o.edges.max_kmeans_iterations,
-                       "safety bound on k-means iterations")
+    command
+        .add_option("--max-kmeans-iterations", o.edges.max_kmeans_iterations,
+                    "safety bound on k-means iterations")
         ->capture_default_str();
-    command.add_option("--bridge-walk", o.edges.max_bridge_walk,
-                       "P (paper 3.3): vertices a walk may visit to bridge a broken edge")
+    command
+        .add_option("--bridge-walk", o.edges.max_bridge_walk,
+                    "P (paper 3.3): vertices a walk may visit to bridge a broken edge")
         ->capture_default_str();
-    command.add_option("--flat-spread", o.edges.flat_normal_spread_deg,
-                       "edge vertices whose one-ring normals spread less (degrees) are flat")
+    command
+        .add_option("--flat-spread", o.edges.flat_normal_spread_deg,
+                    "edge vertices whose one-ring normals spread less (degrees) are flat")
         ->capture_default_str();
-    command.add_option("--region-angle", o.features.max_normal_angle_deg,
-                       "eps_theta (paper 4): neighbouring faces closer than this (degrees) grow "
-                       "into one patch")
+    command
+        .add_option("--region-angle", o.features.max_normal_angle_deg,
+                    "eps_theta (paper 4): neighbouring faces closer than this (degrees) grow "
+                    "into one patch")
         ->capture_default_str();
-    command.add_option("--tiny-patch", o.features.tiny_patch_faces,
-                       "patches with fewer faces are tiny and absorbed (paper 4)")
+    command
+        .add_option("--tiny-patch", o.features.tiny_patch_faces,
+                    "patches with fewer faces are tiny and absorbed (paper 4)")
         ->capture_default_str();
-    command.add_option("--band-interior-fraction", o.features.band_interior_fraction,
-                       "patches with fewer interior vertices than this share are chamfer bands")
+    command
+        .add_option("--band-interior-fraction", o.features.band_interior_fraction,
+                    "patches with fewer interior vertices than this share are chamfer bands")
         ->capture_default_str();
-    command.add_option("--merge-angle", o.features.merge_angle_deg,
-                       "touching patches whose normals differ less (degrees) along their border "
-                       "are merged")
+    command
+        .add_option("--merge-angle", o.features.merge_angle_deg,
+                    "touching patches whose normals differ less (degrees) along their border "
+                    "are merged")
         ->capture_default_str();
-    command.add_option("--curved-region-faces", o.features.curved_region_faces,
-                       "a region this large only grows into faces near its seed's normal, so "
-                       "growth cannot creep around a scallop cusp; 0 grows without limit (paper)")
+    command
+        .add_option("--curved-region-faces", o.features.curved_region_faces,
+                    "a region this large only grows into faces near its seed's normal, so "
+                    "growth cannot creep around a scallop cusp; 0 grows without limit (paper)")
         ->capture_default_str();
     command.add_flag("!--merge-over-sharp-borders", o.features.keep_sharp_borders_apart,
                      "plain greedy merging (paper): may join patches through smooth borders even "
                      "where they meet at a sharp border elsewhere");
-    command.add_option("--unconfirmed-border-angle", o.bands.unconfirmed_border_angle_deg,
-                       "a patch border without edge vertices is a sharp edge when the patches' "
-                       "normals differ more (degrees); 180 is the paper's rule")
+    command
+        .add_option("--unconfirmed-border-angle", o.bands.unconfirmed_border_angle_deg,
+                    "a patch border without edge vertices is a sharp edge when the patches' "
+                    "normals differ more (degrees); 180 is the paper's rule")
         ->capture_default_str();
-    command.add_option("--smooth-border-angle", o.bands.smooth_border_angle_deg,
-                       "a patch border whose patches' normals differ less (degrees) is never a "
-                       "sharp edge, even with edge vertices; 0 is the paper's rule")
+    command
+        .add_option("--smooth-border-angle", o.bands.smooth_border_angle_deg,
+                    "a patch border whose patches' normals differ less (degrees) is never a "
+                    "sharp edge, even with edge vertices; 0 is the paper's rule")
         ->capture_default_str();
-    command.add_option("--spike-angle", o.points.spike_angle_deg,
-                       "corner points are refused when normals around the corner differ more "
-                       "(degrees, paper 5.3)")
+    command
+        .add_option("--spike-angle", o.points.spike_angle_deg,
+                    "corner points are refused when normals around the corner differ more "
+                    "(degrees, paper 5.3)")
         ->capture_default_str();
     command.add_flag("--check-clearance", o.check_clearance,
                      "test every new piece against the triangles near it and drop points whose "
                      "pieces would meet one: no self-intersection for certain, at about a third "
                      "more time");
-    command.add_option("--threads", o.threads, "worker threads, 0 for all cores; the output "
-                                               "does not depend on it")
+    command
+        .add_option("--threads", o.threads,
+                    "worker threads, 0 for all cores; the output "
+                    "does not depend on it")
         ->capture_default_str();
 }
 
@@ -114,8 +132,9 @@ struct Outputs {
     explicit Outputs(const RestoreArguments& args) : mesh(checked(args.output)) {
         if (!args.segments.empty()) {
             if (io::format_for_writing(args.segments) != io::MeshFormat::Ply) {
-                throw WriteError(args.segments, "segments are written as vertex and face "
-                                                "colours, which only PLY stores: use .ply");
+                throw WriteError(args.segments,
+                                 "segments are written as vertex and face "
+                                 "colours, which only PLY stores: use .ply");
             }
             segments.emplace(args.segments);
         }
@@ -141,7 +160,8 @@ void run_restore(const RestoreArguments& args) {
     options.keep_segmentation = outputs.segments.has_value();
     const RestoreResult result = restore(input, options);
 
-    const io::WriteOptions encoding{.encoding = args.ascii ? io::Encoding::Ascii : io::Encoding::Binary};
+    const io::WriteOptions encoding{.encoding =
+                                        args.ascii ? io::Encoding::Ascii : io::Encoding::Binary};
     io::write_mesh(outputs.mesh, result.mesh, encoding);
     if (outputs.segments) {
         const SegmentColors colors = color_segments(result.segmentation);
@@ -158,9 +178,10 @@ void run_restore(const RestoreArguments& args) {
 void add_restore_command(CLI::App& app) {
     auto args = std::make_shared<RestoreArguments>();
     CLI::App* command = app.add_subcommand(
-        "restore", "Restore sharp edges and corners of a mesh made by grid-based machining "
-                   "simulation. Formats from the extension: .stl (binary or ASCII), .obj, .ply, "
-                   ".off.");
+        "restore",
+        "Restore sharp edges and corners of a mesh made by grid-based machining "
+        "simulation. Formats from the extension: .stl (binary or ASCII), .obj, .ply, "
+        ".off.");
     command->add_option("input", args->input, "mesh to restore")->required();
     command->add_option("-o,--output", args->output, "restored mesh")->required();
     command->add_option("--report", args->report, "write every count and stage time as JSON");
@@ -176,9 +197,9 @@ void add_restore_command(CLI::App& app) {
         "the paper's choice wherever resharp makes another (docs/method.md): signed k-means, "
         "unlimited region growing, plain merging, borders confirmed by edge vertices only, eq. "
         "5.1 normals");
-    for (const char* choice : {"--curvature-feature", "--normals", "--curved-region-faces",
-                               "--merge-over-sharp-borders", "--unconfirmed-border-angle",
-                               "--smooth-border-angle"}) {
+    for (const char* choice :
+         {"--curvature-feature", "--normals", "--curved-region-faces", "--merge-over-sharp-borders",
+          "--unconfirmed-border-angle", "--smooth-border-angle"}) {
         paper->excludes(command->get_option(choice));
     }
     command->callback([args] { run_restore(*args); });

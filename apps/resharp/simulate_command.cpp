@@ -36,7 +36,8 @@ public:
     void update(double fraction) {
         if (!enabled_) return;
         const auto now = std::chrono::steady_clock::now();
-        if (now - start_ < std::chrono::seconds(1) || now - last_draw_ < std::chrono::milliseconds(100)) {
+        if (now - start_ < std::chrono::seconds(1) ||
+            now - last_draw_ < std::chrono::milliseconds(100)) {
             return;
         }
         last_draw_ = now;
@@ -85,7 +86,8 @@ void run_simulate(const SimulateArguments& args) {
     const auto meshing_time = meshing_timer.elapsed();
 
     const std::string output = args.output.empty() ? default_output(job) : args.output;
-    const io::WriteOptions encoding{.encoding = args.ascii ? io::Encoding::Ascii : io::Encoding::Binary};
+    const io::WriteOptions encoding{.encoding =
+                                        args.ascii ? io::Encoding::Ascii : io::Encoding::Binary};
     io::write_mesh(output, meshed.mesh, encoding);
     if (!args.oracle.empty()) {
         io::write_mesh(args.oracle, meshed.mesh, encoding,
@@ -116,31 +118,36 @@ void run_simulate(const SimulateArguments& args) {
 void add_simulate_command(CLI::App& app) {
     auto args = std::make_shared<SimulateArguments>();
     CLI::App* command = app.add_subcommand(
-        "simulate", "Mill a box stock along a G-code program on a tri-dexel grid and mesh the "
-                    "result with marching cubes, every vertex exactly on the machined surface. "
-                    "The job file (JSON) gives the stock, the tool table, the pitch and the "
-                    "program; see docs/oracle.md for the oracle file.");
+        "simulate",
+        "Mill a box stock along a G-code program on a tri-dexel grid and mesh the "
+        "result with marching cubes, every vertex exactly on the machined surface. "
+        "The job file (JSON) gives the stock, the tool table, the pitch and the "
+        "program; see docs/oracle.md for the oracle file.");
     command->add_option("job", args->job, "job file (JSON)")->required();
     command->add_option("-o,--output", args->output,
                         "mesh to write (.stl, .obj, .ply, .off); default: the program's path "
                         "with .stl");
-    command->add_option("--oracle", args->oracle,
-                        "also write the mesh as PLY with each vertex's exact normal (nx ny nz) "
-                        "and surface id (surface)")
+    command
+        ->add_option("--oracle", args->oracle,
+                     "also write the mesh as PLY with each vertex's exact normal (nx ny nz) "
+                     "and surface id (surface)")
         ->check([](const std::string& path) {
             return std::filesystem::path(path).extension() == ".ply" ? std::string()
-                                                                      : "the oracle is a .ply file";
+                                                                     : "the oracle is a .ply file";
         });
     command->add_option("--pitch", args->pitch, "grid pitch h in mm (default: the job's)")
         ->check(CLI::PositiveNumber);
-    command->add_option("--grid-phase", args->options.grid_phase,
-                        "grid nodes at stock min + (k + phase) * h")
+    command
+        ->add_option("--grid-phase", args->options.grid_phase,
+                     "grid nodes at stock min + (k + phase) * h")
         ->capture_default_str();
-    command->add_option("--helix-tolerance", args->options.helix_tolerance,
-                        "largest distance (mm) of the ramps replacing a helical arc")
+    command
+        ->add_option("--helix-tolerance", args->options.helix_tolerance,
+                     "largest distance (mm) of the ramps replacing a helical arc")
         ->capture_default_str();
-    command->add_option("--bullnose-step", args->options.sweep.bullnose_step,
-                        "spacing (mm) of the tool copies that sample a bull-nose ramp")
+    command
+        ->add_option("--bullnose-step", args->options.sweep.bullnose_step,
+                     "spacing (mm) of the tool copies that sample a bull-nose ramp")
         ->capture_default_str();
     command->add_flag("--ascii", args->ascii, "write STL and PLY as text instead of binary");
     command->add_flag("-q,--quiet", args->quiet, "no progress bar and no summary");

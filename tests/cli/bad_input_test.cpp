@@ -18,9 +18,9 @@ using test::BadFileExpectation;
 
 CliRun run_restore(const std::filesystem::path& input, const std::filesystem::path& output,
                    const std::filesystem::path& stderr_file) {
-    return run_shell(std::string(RESHARP_CLI) + " restore " + quoted(input) + " -o " +
-                         quoted(output),
-                     stderr_file);
+    return run_shell(
+        std::string(RESHARP_CLI) + " restore " + quoted(input) + " -o " + quoted(output),
+        stderr_file);
 }
 
 class BadInput : public ::testing::TestWithParam<BadFileExpectation> {};

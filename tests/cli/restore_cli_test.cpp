@@ -7,9 +7,8 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "cli_run.h"
 
@@ -19,9 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 
 /// The shipped example, quoted.
-std::string example() {
-    return quoted(fs::path(RESHARP_SOURCE_DIR) / "examples" / "bracket.stl");
-}
+std::string example() { return quoted(fs::path(RESHARP_SOURCE_DIR) / "examples" / "bracket.stl"); }
 
 class RestoreCli : public ::testing::Test {
 protected:
@@ -65,7 +62,7 @@ protected:
 
 TEST_F(RestoreCli, RestoresTheExampleWithReportSegmentsAndSummary) {
     const CliRun run = restore(example() + " -o " + path("out.stl") + " --report " +
-                            path("report.json") + " --segments " + path("segments.ply"));
+                               path("report.json") + " --segments " + path("segments.ply"));
     ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
     EXPECT_NE(run.stderr_text.find("triangles in"), std::string::npos);
     EXPECT_TRUE(fs::exists(dir_ / "out.stl"));
@@ -85,8 +82,8 @@ TEST_F(RestoreCli, RestoresTheExampleWithReportSegmentsAndSummary) {
 TEST_F(RestoreCli, EvaluatesTheSplitCeilingOfTheSimulatedBracket) {
     const std::string job =
         quoted(fs::path(RESHARP_SOURCE_DIR) / "examples" / "bracket" / "job.json");
-    const CliRun simulated = resharp("simulate " + job + " -o " + path("in.ply") +
-                                     " --oracle " + path("oracle.ply") + " -q");
+    const CliRun simulated = resharp("simulate " + job + " -o " + path("in.ply") + " --oracle " +
+                                     path("oracle.ply") + " -q");
     ASSERT_EQ(simulated.exit_code, 0) << simulated.stderr_text;
     const std::string evaluate =
         "evaluate --input " + path("in.ply") + " --oracle " + path("oracle.ply") + " --job " + job;
@@ -122,7 +119,7 @@ TEST_F(RestoreCli, AnErrorInsideAStageLeavesNoOutput) {
     // The option is read by feature segmentation, which refuses it after the mesh was read and
     // the earlier stages ran.
     const CliRun run = restore(example() + " --region-angle 0 -o " + path("out.stl") +
-                            " --report " + path("report.json"));
+                               " --report " + path("report.json"));
     EXPECT_EQ(run.exit_code, 2);
     EXPECT_NE(run.stderr_text.find("resharp: error: region growing angle"), std::string::npos)
         << run.stderr_text;
@@ -139,8 +136,8 @@ TEST_F(RestoreCli, PaperVariantRunsAndRefusesTheChoicesItSets) {
 }
 
 TEST_F(RestoreCli, SegmentsMustBePly) {
-    const CliRun run = restore(example() + " -o " + path("out.stl") + " --segments " +
-                            path("segments.stl"));
+    const CliRun run =
+        restore(example() + " -o " + path("out.stl") + " --segments " + path("segments.stl"));
     EXPECT_EQ(run.exit_code, 3);
     EXPECT_TRUE(outputs().empty());
 }
@@ -152,9 +149,9 @@ TEST_F(RestoreCli, OutOfMemoryExitsFourAndLeavesNoOutput) {
     // 16 MB of address space: the program starts, but reading and restoring the example (about
     // 20 MB at peak) runs out. Where exactly it runs out depends on the machine; the contract
     // does not.
-    const CliRun run = restore(example() + " -o " + path("out.stl") + " --report " +
-                                   path("report.json"),
-                               "ulimit -v 16000; ");
+    const CliRun run =
+        restore(example() + " -o " + path("out.stl") + " --report " + path("report.json"),
+                "ulimit -v 16000; ");
     EXPECT_EQ(run.exit_code, 4) << run.stderr_text;
     EXPECT_EQ(run.stderr_text.rfind("resharp: error: ", 0), 0u) << run.stderr_text;
     EXPECT_TRUE(outputs().empty());

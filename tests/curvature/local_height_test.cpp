@@ -49,7 +49,8 @@ TEST(LocalHeight, HoleWallBendsLikeItsRadius) {
     std::vector<double> largest;
     for (Index v = 0; v < shape.mesh.vertex_count(); ++v) {
         bool inside_wall = shape.surface_ids[v] == 6;
-        for_each_ring_vertex(shape.mesh, c, v, [&](Index j) { inside_wall &= shape.surface_ids[j] == 6; });
+        for_each_ring_vertex(shape.mesh, c, v,
+                             [&](Index j) { inside_wall &= shape.surface_ids[j] == 6; });
         if (inside_wall) largest.push_back(k.k1[v]);
     }
     ASSERT_GT(largest.size(), 50u);

@@ -1,7 +1,8 @@
+#include "resharp/eval/detection.h"
+
 #include <gtest/gtest.h>
 
 #include "resharp/core/errors.h"
-#include "resharp/eval/detection.h"
 
 namespace resharp::eval {
 namespace {
@@ -13,8 +14,7 @@ namespace {
 TEST(Detection, TrueRolesFromTheOracle) {
     const Mesh mesh{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0), Vec3(0, 2, 0)},
                     {{0, 1, 2}, {0, 2, 3}, {2, 3, 4}}};
-    const Oracle oracle{{Vec3::UnitZ(), Vec3::UnitZ(), Vec3::UnitZ(), Vec3::UnitX(),
-                         Vec3::UnitY()},
+    const Oracle oracle{{Vec3::UnitZ(), Vec3::UnitZ(), Vec3::UnitZ(), Vec3::UnitX(), Vec3::UnitY()},
                         {1, 1, 1, 2, 3}};
     const auto roles = true_band_roles(mesh, oracle);
     EXPECT_EQ(roles, (std::vector{BandRole::None, BandRole::Edge, BandRole::Corner}));

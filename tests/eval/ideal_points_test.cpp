@@ -1,12 +1,12 @@
-#include <algorithm>
+#include "resharp/eval/ideal_points.h"
 
 #include <gtest/gtest.h>
 
-#include "resharp/eval/ideal_points.h"
-#include "resharp/eval/miss_causes.h"
-#include "resharp/eval/restoration_rate.h"
+#include <algorithm>
 
 #include "oracle_square.h"
+#include "resharp/eval/miss_causes.h"
+#include "resharp/eval/restoration_rate.h"
 
 namespace resharp::eval {
 namespace {

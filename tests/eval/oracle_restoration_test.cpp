@@ -1,12 +1,13 @@
-#include <algorithm>
+#include "resharp/eval/oracle_restoration.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
+#include "oracle_square.h"
 #include "resharp/core/errors.h"
 #include "resharp/eval/detection.h"
-#include "resharp/eval/oracle_restoration.h"
 #include "support/grid_shapes.h"
-#include "oracle_square.h"
 
 namespace resharp::eval {
 namespace {

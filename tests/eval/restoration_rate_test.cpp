@@ -1,8 +1,9 @@
+#include "resharp/eval/restoration_rate.h"
+
 #include <gtest/gtest.h>
 
 #include "resharp/core/errors.h"
 #include "resharp/eval/miss_causes.h"
-#include "resharp/eval/restoration_rate.h"
 
 namespace resharp::eval {
 namespace {
@@ -33,13 +34,14 @@ struct Scene {
     Mesh output;
     std::vector<IdealPoint> ideal;
     Scene() {
-        ideal = {edge_point(Vec3(0.5, 0.5, 0), 1, 2), edge_point(Vec3(2, 0, 0), 0, 1),
+        ideal = {edge_point(Vec3(0.5, 0.5, 0), 1, 2),
+                 edge_point(Vec3(2, 0, 0), 0, 1),
                  edge_point(Vec3(-5, 0, 0), 0, 2),
                  {Vec3(0, 3, 0), IdealKind::Corner, 1, {1, 3, 2}, false}};
         output = input;
-        output.positions.push_back(Vec3(0.51, 0.5, 0));   // 4: restores A
-        output.positions.push_back(Vec3(2, 0.2, 0.3));    // 5: 0.36 from B and from the plane
-        output.positions.push_back(Vec3(0, 3, 0));        // 6: restores D
+        output.positions.push_back(Vec3(0.51, 0.5, 0));  // 4: restores A
+        output.positions.push_back(Vec3(2, 0.2, 0.3));   // 5: 0.36 from B and from the plane
+        output.positions.push_back(Vec3(0, 3, 0));       // 6: restores D
         output.triangles = {{0, 1, 4}, {0, 4, 2}, {1, 3, 4}, {4, 3, 2}};
     }
 };
@@ -67,8 +69,8 @@ TEST(RestorationRate, CountsPointsWithinTau) {
 TEST(RestorationRate, BoundaryPointsAreLeftOut) {
     Scene s;
     s.ideal[2].on_boundary = true;
-    const RestorationScore r = score_restoration(s.input, s.output, s.ideal, plane_samples(),
-                                                 {.pitch = 1.0});
+    const RestorationScore r =
+        score_restoration(s.input, s.output, s.ideal, plane_samples(), {.pitch = 1.0});
     EXPECT_EQ(r.ideal_edges, 2u);
     EXPECT_TRUE(std::isnan(r.ideal_distance[2]));
 }
@@ -82,8 +84,8 @@ TEST(RestorationRate, RefusesAnOutputThatDoesNotStartWithTheInput) {
 
 TEST(MissCauses, ResolvesDetectionThenInsertion) {
     Scene s;
-    const RestorationScore r = score_restoration(s.input, s.output, s.ideal, plane_samples(),
-                                                 {.pitch = 1.0});
+    const RestorationScore r =
+        score_restoration(s.input, s.output, s.ideal, plane_samples(), {.pitch = 1.0});
     // Without labels: B (edge 0-1) has new vertex 4 joined to 0 and 1 -> placed far; C (edge
     // 0-2) likewise joined by 4 -> placed far. Make C's vertices share a patch instead.
     Segmentation seg;
@@ -93,8 +95,8 @@ TEST(MissCauses, ResolvesDetectionThenInsertion) {
     const MissCauses c = find_miss_causes(s.input, s.output, s.ideal, r.ideal_distance, 0.05, seg);
     EXPECT_EQ(c.edges[std::size_t(MissCause::PlacedFar)], 1u);  // B: patches 0 and 1
     EXPECT_EQ(c.edges[std::size_t(MissCause::SamePatch)], 1u);  // C: both on patch 0
-    const MissCauses plain = find_miss_causes(s.input, s.input, s.ideal,
-                                              std::vector<double>(4, 1.0), 0.05, {});
+    const MissCauses plain =
+        find_miss_causes(s.input, s.input, s.ideal, std::vector<double>(4, 1.0), 0.05, {});
     EXPECT_EQ(plain.edges[std::size_t(MissCause::NotInserted)], 3u);
     EXPECT_EQ(plain.corners[std::size_t(MissCause::NotInserted)], 1u);
 }

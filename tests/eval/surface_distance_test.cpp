@@ -1,7 +1,8 @@
+#include "resharp/eval/surface_distance.h"
+
 #include <gtest/gtest.h>
 
 #include "resharp/core/errors.h"
-#include "resharp/eval/surface_distance.h"
 #include "resharp/eval/surface_samples.h"
 #include "resharp/sim/solids.h"
 
@@ -15,8 +16,8 @@ const Vec3 kLo(0.1, 0.1, 0.15), kHi(0.9, 0.6, 0.7);
 Mesh box_mesh(const Vec3& lo, const Vec3& hi) {
     Mesh m;
     for (int i = 0; i < 8; ++i) {
-        m.positions.push_back(Vec3(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(),
-                                   i & 4 ? hi.z() : lo.z()));
+        m.positions.push_back(
+            Vec3(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z()));
     }
     m.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
                    {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
@@ -53,8 +54,8 @@ TEST(SurfaceSamples, MeshSamplesAreTheExactCrossingsWhenTheMeshIsTheSurface) {
 TEST(SurfaceMetrics, SurfaceAgainstItselfIsPerfect) {
     const Mesh mesh = box_mesh(kLo, kHi);
     const SurfaceMetricsOptions o{.pitch = 1.0, .edge_radius = 0.3};
-    const SurfaceMetrics m = compare_surfaces(mesh, sample_mesh(mesh, grid(0.25)),
-                                              exact_box(0.25), o);
+    const SurfaceMetrics m =
+        compare_surfaces(mesh, sample_mesh(mesh, grid(0.25)), exact_box(0.25), o);
     EXPECT_NEAR(m.chamfer_l1, 0.0, 1e-12);
     EXPECT_NEAR(m.hausdorff, 0.0, 1e-12);
     EXPECT_DOUBLE_EQ(m.normal_consistency, 1.0);
@@ -72,14 +73,14 @@ TEST(SurfaceMetrics, OffsetBoxIsItsOffsetAway) {
     const double d = 0.01;
     const Mesh grown = box_mesh(kLo - Vec3::Constant(d), kHi + Vec3::Constant(d));
     const SurfaceMetricsOptions o{.pitch = 1.0, .edge_radius = 0.3, .f1_threshold = 0.005};
-    const SurfaceMetrics m = compare_surfaces(grown, sample_mesh(grown, grid(0.25)),
-                                              exact_box(0.25), o);
+    const SurfaceMetrics m =
+        compare_surfaces(grown, sample_mesh(grown, grid(0.25)), exact_box(0.25), o);
     // The mesh side: each mesh sample's nearest exact sample is the crossing of its own ray,
     // d away (the next one on the face is a pitch away).
     EXPECT_NEAR(m.chamfer_l1, d, 1e-12);
     EXPECT_NEAR(m.hausdorff, d, 1e-12);
     EXPECT_NEAR(m.chamfer_l2, 2 * d * d, 1e-15);
-    EXPECT_DOUBLE_EQ(m.f1, 0.0);                 // every distance is at least d > threshold
+    EXPECT_DOUBLE_EQ(m.f1, 0.0);  // every distance is at least d > threshold
 }
 
 TEST(SurfaceMetrics, RefusesEmptySamples) {

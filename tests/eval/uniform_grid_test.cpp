@@ -1,8 +1,8 @@
-#include <random>
+#include "resharp/eval/uniform_grid.h"
 
 #include <gtest/gtest.h>
 
-#include "resharp/eval/uniform_grid.h"
+#include <random>
 
 namespace resharp::eval {
 namespace {
@@ -23,8 +23,8 @@ std::vector<Vec3> random_points(std::size_t n, double scale, unsigned seed) {
 TEST(UniformGrid, NearestMatchesBruteForce) {
     for (const std::size_t count : {std::size_t{5}, std::size_t{2000}}) {
         const auto points = random_points(count, 10.0, 1);
-        const UniformGrid grid(count, [&](std::size_t i) { return Box3(points[i], points[i]); },
-                               0.5);
+        const UniformGrid grid(
+            count, [&](std::size_t i) { return Box3(points[i], points[i]); }, 0.5);
         for (const Vec3& q : random_points(200, 30.0, 2)) {
             const Vec3 p = q - Vec3::Constant(10.0);
             double best = 1e300;
@@ -38,8 +38,8 @@ TEST(UniformGrid, NearestMatchesBruteForce) {
 
 TEST(UniformGrid, ForEachNearVisitsEveryItemWithinRadius) {
     const auto points = random_points(3000, 5.0, 3);
-    const UniformGrid grid(points.size(),
-                           [&](std::size_t i) { return Box3(points[i], points[i]); }, 0.3);
+    const UniformGrid grid(
+        points.size(), [&](std::size_t i) { return Box3(points[i], points[i]); }, 0.3);
     const Vec3 p(2.5, 2.5, 2.5);
     std::vector<bool> seen(points.size(), false);
     grid.for_each_near(p, 0.7, [&](Index k) { seen[k] = true; });
@@ -51,7 +51,8 @@ TEST(UniformGrid, ForEachNearVisitsEveryItemWithinRadius) {
 }
 
 TEST(UniformGrid, EmptyGridHasNoNearest) {
-    const UniformGrid grid(0, [](std::size_t) { return Box3(); }, 1.0);
+    const UniformGrid grid(
+        0, [](std::size_t) { return Box3(); }, 1.0);
     EXPECT_EQ(grid.nearest(Vec3::Zero(), [](Index) { return 0.0; }).first, kNoIndex);
 }
 

@@ -1,7 +1,8 @@
+#include "resharp/eval/validity.h"
+
 #include <gtest/gtest.h>
 
 #include "resharp/core/errors.h"
-#include "resharp/eval/validity.h"
 
 namespace resharp::eval {
 namespace {
@@ -43,9 +44,9 @@ TEST(Validity, FlippedFacesAgainstExactNormals) {
     const Oracle oracle{{Vec3::UnitZ(), Vec3::UnitZ(), Vec3::UnitZ()}, {0, 0, 0}};
     SurfaceSamples exact{{Vec3(0.3, 0.3, 0)}, {Vec3::UnitZ()}};
     Mesh output = input;
-    output.positions.push_back(Vec3(0.3, 0.3, 0));    // 3
-    output.positions.push_back(Vec3(0.35, 0.3, 0));   // 4
-    output.positions.push_back(Vec3(0.3, 0.35, 0));   // 5
+    output.positions.push_back(Vec3(0.3, 0.3, 0));                    // 3
+    output.positions.push_back(Vec3(0.35, 0.3, 0));                   // 4
+    output.positions.push_back(Vec3(0.3, 0.35, 0));                   // 5
     output.triangles = {{0, 1, 3}, {1, 2, 3}, {2, 3, 0}, {3, 5, 4}};  // {2,3,0} and {3,5,4}: -z
     EXPECT_EQ(count_flipped_faces(input, output, oracle, exact, FlipScope::ChangedFaces), 2u);
     // The input itself: no face flipped; with one vertex's normal reversed, its face is.

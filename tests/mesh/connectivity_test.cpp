@@ -44,10 +44,10 @@ TEST(Connectivity, ClassifiesBoundaryNonManifoldAndInconsistentEdges) {
     // Three faces on edge 0-1 (non-manifold); faces 3 and 4 share 2->5 in the same direction.
     mesh.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}, {2, 5, 1}, {2, 5, 3}};
     const Connectivity c = build_connectivity(mesh);
-    EXPECT_EQ(c.edge_kind[0], EdgeKind::NonManifold);   // 0->1 in face 0
-    EXPECT_EQ(c.edge_kind[9], EdgeKind::Inconsistent);  // 2->5 in face 3
-    EXPECT_EQ(c.edge_kind[12], EdgeKind::Inconsistent); // 2->5 in face 4
-    EXPECT_EQ(c.edge_kind[7], EdgeKind::Boundary);      // 0->3 in face 1
+    EXPECT_EQ(c.edge_kind[0], EdgeKind::NonManifold);    // 0->1 in face 0
+    EXPECT_EQ(c.edge_kind[9], EdgeKind::Inconsistent);   // 2->5 in face 3
+    EXPECT_EQ(c.edge_kind[12], EdgeKind::Inconsistent);  // 2->5 in face 4
+    EXPECT_EQ(c.edge_kind[7], EdgeKind::Boundary);       // 0->3 in face 1
     EXPECT_EQ(c.twin[0], kNoIndex);
 }
 

@@ -7,9 +7,7 @@
 namespace resharp {
 namespace {
 
-MeshDiagnostics diagnose_mesh(const Mesh& mesh) {
-    return diagnose(mesh, build_connectivity(mesh));
-}
+MeshDiagnostics diagnose_mesh(const Mesh& mesh) { return diagnose(mesh, build_connectivity(mesh)); }
 
 TEST(Diagnostics, ClosedBoxIsClean) {
     const MeshDiagnostics d = diagnose_mesh(test::box_mesh());
@@ -28,9 +26,9 @@ TEST(Diagnostics, BoxWithoutOneFaceHasFourBoundaryEdges) {
 
 TEST(Diagnostics, CountsDuplicateDegenerateAndFlippedFaces) {
     Mesh mesh = test::box_mesh();
-    mesh.triangles.push_back(mesh.triangles[0]);       // duplicate: its edges become non-manifold
-    mesh.triangles.push_back({0, 0, 1});               // degenerate
-    mesh.positions.push_back({9, 9, 9});               // isolated
+    mesh.triangles.push_back(mesh.triangles[0]);  // duplicate: its edges become non-manifold
+    mesh.triangles.push_back({0, 0, 1});          // degenerate
+    mesh.positions.push_back({9, 9, 9});          // isolated
     const MeshDiagnostics d = diagnose_mesh(mesh);
     EXPECT_EQ(d.duplicate_faces, 1u);
     EXPECT_EQ(d.degenerate_faces, 1u);
@@ -54,7 +52,8 @@ TEST(Diagnostics, CountsComponentsAndNonManifoldVertices) {
 
     // Glue the second box's corner onto the first box's corner 7: one vertex, two fans.
     for (Triangle& t : two.triangles) {
-        for (Index& v : t) if (v == 8) v = 7;
+        for (Index& v : t)
+            if (v == 8) v = 7;
     }
     const MeshDiagnostics glued = diagnose_mesh(two);
     EXPECT_EQ(glued.nonmanifold_vertices, 1u);

@@ -27,8 +27,8 @@ TEST(Weld, MergesExactlyEqualPointsOfAnStlSoup) {
 TEST(Weld, KeepsPointsThatDifferInTheLastBit) {
     TriangleSoup soup;
     const double x = 1.0;
-    soup.points = {{0, 0, 0}, {x, 0, 0}, {0, 1, 0},
-                   {std::nextafter(x, 2.0), 0, 0}, {0, 0, 0}, {0, 1, 0}};
+    soup.points = {{0, 0, 0}, {x, 0, 0}, {0, 1, 0}, {std::nextafter(x, 2.0), 0, 0},
+                   {0, 0, 0}, {0, 1, 0}};
     soup.triangles = {{0, 1, 2}, {3, 4, 5}};
     EXPECT_EQ(weld(soup).vertex_count(), 4u);
 }

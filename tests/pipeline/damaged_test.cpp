@@ -25,9 +25,9 @@ double restored_share_away_from(const test::SampledShape& shape, const Mesh& dam
     Mesh clean = damaged;
     clean.triangles.resize(shape.mesh.face_count());  // ideal points of the undamaged faces
     const auto ideal = eval::find_ideal_points(clean, {normals, surfaces});
-    const std::span<const Vec3> added(r.mesh.positions.begin() +
-                                          static_cast<std::ptrdiff_t>(damaged.vertex_count()),
-                                      r.mesh.positions.end());
+    const std::span<const Vec3> added(
+        r.mesh.positions.begin() + static_cast<std::ptrdiff_t>(damaged.vertex_count()),
+        r.mesh.positions.end());
     const auto miss = eval::nearest_distances(ideal, added, shape.pitch);
     std::size_t counted = 0, restored = 0;
     for (std::size_t i = 0; i < ideal.size(); ++i) {
@@ -73,7 +73,8 @@ TEST(DamagedMesh, NonManifoldFinIsCountedAndLeftAlone) {
     const RestoreResult r = restore(mesh);
     EXPECT_EQ(r.report.input.nonmanifold_edges, 1u);
     test::expect_input_vertices_preserved(mesh, r.mesh);
-    EXPECT_EQ(std::count(r.mesh.triangles.begin(), r.mesh.triangles.end(), mesh.triangles.back()), 1);
+    EXPECT_EQ(std::count(r.mesh.triangles.begin(), r.mesh.triangles.end(), mesh.triangles.back()),
+              1);
     EXPECT_EQ(restored_share_away_from(shape, mesh, r, centroid(mesh, f), 2.0), 1.0);
 }
 

@@ -21,7 +21,8 @@ struct Outcome {
     std::vector<double> miss;  ///< per ideal point: distance to the nearest new vertex
     std::size_t restored_within(double tolerance, eval::IdealKind kind) const {
         std::size_t n = 0;
-        for (std::size_t i = 0; i < ideal.size(); ++i) n += ideal[i].kind == kind && miss[i] <= tolerance;
+        for (std::size_t i = 0; i < ideal.size(); ++i)
+            n += ideal[i].kind == kind && miss[i] <= tolerance;
         return n;
     }
     std::size_t count(eval::IdealKind kind) const {
@@ -34,9 +35,9 @@ Outcome restore_shape(const test::SampledShape& shape, const RestoreOptions& opt
     Outcome o;
     o.result = restore(shape.mesh, options);
     o.ideal = eval::find_ideal_points(shape.mesh, {shape.exact_normals, shape.surface_ids});
-    const std::span<const Vec3> added(o.result.mesh.positions.begin() +
-                                          static_cast<std::ptrdiff_t>(shape.mesh.vertex_count()),
-                                      o.result.mesh.positions.end());
+    const std::span<const Vec3> added(
+        o.result.mesh.positions.begin() + static_cast<std::ptrdiff_t>(shape.mesh.vertex_count()),
+        o.result.mesh.positions.end());
     o.miss = eval::nearest_distances(o.ideal, added, shape.pitch);
     return o;
 }
@@ -88,8 +89,9 @@ TEST_P(RestoreBox, GetsEveryEdgeAndCornerBackExactly) {
     expect_invariants(shape, o);
 }
 
-INSTANTIATE_TEST_SUITE_P(OursAndPapers, RestoreBox, ::testing::Bool(),
-                         [](const auto& param_info) { return param_info.param ? "Paper" : "Ours"; });
+INSTANTIATE_TEST_SUITE_P(OursAndPapers, RestoreBox, ::testing::Bool(), [](const auto& param_info) {
+    return param_info.param ? "Paper" : "Ours";
+});
 
 TEST(Restore, PaperVariantSetsThePapersChoicesAndKeepsTheRest) {
     RestoreOptions given;
@@ -192,7 +194,6 @@ TEST(Restore, RestoresWhatItCanOnAnOpenBox) {
         if (p.on_boundary || p.position.z() > 6.07 - 2 * shape.pitch) continue;
         ++away_from_top;
         restored += o.miss[i] <= 1e-6;
-
     }
     EXPECT_GT(away_from_top, 100u);
     EXPECT_EQ(restored, away_from_top);

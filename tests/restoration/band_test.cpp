@@ -24,8 +24,8 @@ struct Classified {
 
 Classified classify(const Mesh& mesh) {
     Classified c{build_connectivity(mesh), face_normals(mesh), {}, {}};
-    const auto k = estimate_principal_curvatures(mesh, c.connectivity,
-                                                 vertex_normals(mesh, c.connectivity));
+    const auto k =
+        estimate_principal_curvatures(mesh, c.connectivity, vertex_normals(mesh, c.connectivity));
     const EdgeSegmentation edges = segment_edges(mesh, c.connectivity, k, c.face_normals);
     c.features = segment_features(mesh, c.connectivity, c.face_normals, edges.is_edge);
     c.bands = classify_bands(mesh, c.connectivity, c.face_normals, edges.is_edge,
@@ -56,10 +56,10 @@ TEST(BandClassification, BoxCrossingEdgesAndCornersAreTheOraclesOwn) {
 TEST(FeatureNormals, BandVerticesOfABoxGetTheirFacesExactNormal) {
     const test::SampledShape shape = test::sampled_box();
     const Classified c = classify(shape.mesh);
-    const std::vector<Vec3> n = feature_normals(shape.mesh, c.connectivity, c.face_normals,
-                                                c.features.face_patch, c.features.vertex_patch,
-                                                c.bands)
-                                    .normal;
+    const std::vector<Vec3> n =
+        feature_normals(shape.mesh, c.connectivity, c.face_normals, c.features.face_patch,
+                        c.features.vertex_patch, c.bands)
+            .normal;
     std::size_t checked = 0;
     for (Index f = 0; f < shape.mesh.face_count(); ++f) {
         if (c.bands.face_role[f] == BandRole::None) continue;
@@ -85,10 +85,9 @@ TEST(BandClassification, SharpBordersCountWithoutEdgeVerticesUnlessThePaperRuleI
         classify_bands(shape.mesh, c.connectivity, c.face_normals, no_edge_vertices,
                        c.features.face_patch, c.features.vertex_patch);
     EXPECT_EQ(by_angle.crossing_edges, c.bands.crossing_edges);  // right angles: all confirmed
-    const BandClassification paper =
-        classify_bands(shape.mesh, c.connectivity, c.face_normals, no_edge_vertices,
-                       c.features.face_patch, c.features.vertex_patch,
-                       {.unconfirmed_border_angle_deg = 180.0});
+    const BandClassification paper = classify_bands(
+        shape.mesh, c.connectivity, c.face_normals, no_edge_vertices, c.features.face_patch,
+        c.features.vertex_patch, {.unconfirmed_border_angle_deg = 180.0});
     EXPECT_EQ(paper.crossing_edges, 0u);
 }
 
@@ -177,10 +176,10 @@ TEST(FeatureNormals, RejectsAnglesOutsideTheHalfTurn) {
     const std::vector<Index> patch_of_vertices(sheet.mesh.vertex_count(), 0);
     const BandClassification bands{{}, std::vector<BandRole>(sheet.mesh.face_count()), 0, 0, 0};
     for (double bad : {-1.0, 181.0, std::numeric_limits<double>::quiet_NaN()}) {
-        EXPECT_THROW(feature_normals(sheet.mesh, connectivity, face_normals(sheet.mesh),
-                                     patch_of_faces, patch_of_vertices, bands,
-                                     {.max_fit_residual_deg = bad}),
-                     InvalidInput);
+        EXPECT_THROW(
+            feature_normals(sheet.mesh, connectivity, face_normals(sheet.mesh), patch_of_faces,
+                            patch_of_vertices, bands, {.max_fit_residual_deg = bad}),
+            InvalidInput);
     }
 }
 

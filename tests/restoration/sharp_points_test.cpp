@@ -51,8 +51,8 @@ TEST(EdgePoint, ObliqueDihedralAngle) {
     // Planes through the z-axis with normals 40 degrees apart.
     const double t = 40.0 * M_PI / 180.0;
     const Vec3 n1(0, 1, 0), n2(std::sin(t), std::cos(t), 0);
-    const Vec3 a(-0.4, 0.0, 0.0);                                   // on plane 1
-    const Vec3 b = 0.3 * Vec3(std::cos(t), -std::sin(t), 0.0);      // on plane 2
+    const Vec3 a(-0.4, 0.0, 0.0);                               // on plane 1
+    const Vec3 b = 0.3 * Vec3(std::cos(t), -std::sin(t), 0.0);  // on plane 2
     const auto m = edge_point(a, n1, b, n2);
     ASSERT_TRUE(m.has_value());
     EXPECT_LT(m->norm(), 1e-14);
@@ -60,8 +60,8 @@ TEST(EdgePoint, ObliqueDihedralAngle) {
 }
 
 TEST(CornerPoint, MeetsThreePlanes) {
-    const auto m = corner_point(Vec3(0.9, 2, 0.5), Vec3(0, 1, 0), Vec3(1, 0.3, 0.1),
-                                Vec3(1, 0, 0), Vec3(0.2, 0.1, 3), Vec3(0, 0, 1));
+    const auto m = corner_point(Vec3(0.9, 2, 0.5), Vec3(0, 1, 0), Vec3(1, 0.3, 0.1), Vec3(1, 0, 0),
+                                Vec3(0.2, 0.1, 3), Vec3(0, 0, 1));
     ASSERT_TRUE(m.has_value());
     EXPECT_TRUE(m->isApprox(Vec3(1, 2, 3), 1e-15));
     EXPECT_FALSE(corner_point(Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3(1, 0, 0),

@@ -46,7 +46,8 @@ TEST(Split, OneCrossingEdgeSplitsBothFacesAtTheIdealPoint) {
     SplitReport report;
     std::vector<Index> source;
     const Mesh out = split_band_triangles(s.mesh, s.connectivity, s.face_normals,
-                                          {s.feature_normals, std::vector<float>(4, 0.0f)}, s.feature_normals, points, report, source);
+                                          {s.feature_normals, std::vector<float>(4, 0.0f)},
+                                          s.feature_normals, points, report, source);
     EXPECT_EQ(source, (std::vector<Index>{0, 0, 1, 1}));
     EXPECT_EQ(report.refused_by_quality, 0u);
     EXPECT_EQ(report.new_vertices, 1u);
@@ -58,7 +59,8 @@ TEST(Split, OneCrossingEdgeSplitsBothFacesAtTheIdealPoint) {
     // Orientation kept: every piece faces outward like the strip.
     for (std::size_t f = 0; f < out.face_count(); ++f) {
         const Triangle& t = out.triangles[f];
-        const Vec3 n = triangle_normal(out.positions[t[0]], out.positions[t[1]], out.positions[t[2]]);
+        const Vec3 n =
+            triangle_normal(out.positions[t[0]], out.positions[t[1]], out.positions[t[2]]);
         EXPECT_GT(n.dot(Vec3(1, 1, 0)), 0.0) << "piece " << f;
     }
 }
@@ -70,7 +72,8 @@ TEST(Split, DropsAPointWhoseSplitWouldTurnAPieceOver) {
     SplitReport report;
     std::vector<Index> source;
     const Mesh out = split_band_triangles(s.mesh, s.connectivity, s.face_normals,
-                                          {s.feature_normals, std::vector<float>(4, 0.0f)}, s.feature_normals, points, report, source);
+                                          {s.feature_normals, std::vector<float>(4, 0.0f)},
+                                          s.feature_normals, points, report, source);
     EXPECT_EQ(report.refused_by_quality, 1u);
     EXPECT_EQ(out.vertex_count(), 4u);
     EXPECT_EQ(out.triangles, s.mesh.triangles);
@@ -91,7 +94,8 @@ TEST(SplitGuard, RefusesAPieceTurnedAgainstTheFaceItReplaces) {
     Strip s = make_strip();
     SharpPoints points = points_on_edge_a1_b0(s);
     points.points[0] = Vec3(-0.2225, 0.1, 0.75);
-    const Vec3 piece = (s.mesh.positions[1] - s.mesh.positions[0]).cross(points.points[0] - s.mesh.positions[0]);
+    const Vec3 piece =
+        (s.mesh.positions[1] - s.mesh.positions[0]).cross(points.points[0] - s.mesh.positions[0]);
     ASSERT_GT(piece.dot(s.feature_normals[0]), 0.0);
     ASSERT_LT(piece.dot(s.face_normals[0]), 0.0);
     SplitReport report;
@@ -125,7 +129,8 @@ TEST(SplitGuard, RefusesAPointWhosePiecesWouldCutThroughANearbyFace) {
     ASSERT_EQ(plain_report.new_vertices, 1u);
     // The pieces the plain strip gets would cut through the blocker...
     const Strip s = strip_with_blocker();
-    pieces.positions.insert(pieces.positions.end(), s.mesh.positions.begin() + 4, s.mesh.positions.end());
+    pieces.positions.insert(pieces.positions.end(), s.mesh.positions.begin() + 4,
+                            s.mesh.positions.end());
     pieces.triangles.push_back({2, 5, 6});
     ASSERT_FALSE(eval::self_intersecting_pairs(pieces).empty());
     ASSERT_TRUE(eval::self_intersecting_pairs(s.mesh).empty());

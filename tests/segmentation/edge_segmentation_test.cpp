@@ -17,8 +17,8 @@ struct Labelled {
 Labelled segment(const Mesh& mesh, const EdgeSegmentationOptions& options = {}) {
     Labelled l{build_connectivity(mesh), {}};
     const auto fn = face_normals(mesh);
-    const auto k = estimate_principal_curvatures(mesh, l.connectivity,
-                                                 vertex_normals(mesh, l.connectivity));
+    const auto k =
+        estimate_principal_curvatures(mesh, l.connectivity, vertex_normals(mesh, l.connectivity));
     l.segmentation = segment_edges(mesh, l.connectivity, k, fn, options);
     return l;
 }
@@ -59,7 +59,8 @@ TEST(EdgeSegmentation, MagnitudesKeepTheConcaveEdgeThatSignedCurvaturesLose) {
                 continue;  // only wall-to-floor edges: ids 6 and 10
             }
             ++crossing;
-            seen_by_magnitude += magnitude.segmentation.is_edge[u] || magnitude.segmentation.is_edge[v];
+            seen_by_magnitude +=
+                magnitude.segmentation.is_edge[u] || magnitude.segmentation.is_edge[v];
             seen_by_signed += paper.segmentation.is_edge[u] || paper.segmentation.is_edge[v];
         }
     }

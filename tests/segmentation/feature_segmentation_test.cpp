@@ -63,7 +63,8 @@ TEST(FeatureSegmentation, LabelsEveryVertexOfEveryShapeByItsSurface) {
 TEST(FeatureSegmentation, MergesTheHoleWallThatRegionGrowingSplits) {
     const test::SampledShape shape = test::sampled_drilled_plate();
     const FeatureSegmentation s = segment(shape.mesh);
-    EXPECT_GT(s.grown_patches, 20u);  // the wall's faces differ by more than 8 degrees here and there
+    EXPECT_GT(s.grown_patches,
+              20u);  // the wall's faces differ by more than 8 degrees here and there
     EXPECT_GT(s.merges, 0u);
     expect_one_patch_per_surface(shape, s);
     // Without merging the wall stays in pieces.

@@ -28,8 +28,9 @@ std::pair<std::uint64_t, std::string> error_of(const std::string& text) {
 }
 
 TEST(Gcode, LinesRapidsModalCoordinatesAndToolChange) {
-    const ToolPath p = parse("%\nO1000\nN10 G90 G21 G17 (safe start)\nT3 M6\nG0 X1 Y2 Z5 S12000 M3\n"
-                             "G1 Z-1 F300 ; plunge\nX4\nY6\nM30\n%\n");
+    const ToolPath p = parse(
+        "%\nO1000\nN10 G90 G21 G17 (safe start)\nT3 M6\nG0 X1 Y2 Z5 S12000 M3\n"
+        "G1 Z-1 F300 ; plunge\nX4\nY6\nM30\n%\n");
     ASSERT_EQ(p.moves.size(), 4u);
     EXPECT_EQ(p.moves[0].kind, MoveKind::Rapid);
     EXPECT_EQ(p.moves[0].start, Vec3(0, 0, 0));
@@ -43,7 +44,8 @@ TEST(Gcode, LinesRapidsModalCoordinatesAndToolChange) {
 }
 
 TEST(Gcode, StartPositionInchesAndIncrementalMode) {
-    const ToolPath p = parse("G20 G91 G1 X1 Y-1\nZ0.5\nG90 G21 X0\n", {.start_position = Vec3(10, 10, 10)});
+    const ToolPath p =
+        parse("G20 G91 G1 X1 Y-1\nZ0.5\nG90 G21 X0\n", {.start_position = Vec3(10, 10, 10)});
     ASSERT_EQ(p.moves.size(), 3u);
     EXPECT_TRUE(p.moves[0].end.isApprox(Vec3(35.4, -15.4, 10), 1e-14));
     EXPECT_TRUE(p.moves[1].end.isApprox(Vec3(35.4, -15.4, 22.7), 1e-14));
@@ -51,7 +53,8 @@ TEST(Gcode, StartPositionInchesAndIncrementalMode) {
 }
 
 TEST(Gcode, ArcsBothWaysWithCentreOffsetsAndRadius) {
-    const ToolPath p = parse("G0 X5 Y0\nG3 X0 Y5 I-5 J0\nG2 X5 Y0 I0 J-5\nG3 X0 Y5 R5\nG2 X5 Y0 R-5\n");
+    const ToolPath p =
+        parse("G0 X5 Y0\nG3 X0 Y5 I-5 J0\nG2 X5 Y0 I0 J-5\nG3 X0 Y5 R5\nG2 X5 Y0 R-5\n");
     ASSERT_EQ(p.moves.size(), 5u);
     const double quarter = std::numbers::pi / 2;
     EXPECT_EQ(p.moves[1].kind, MoveKind::ArcCounterClockwise);
@@ -80,7 +83,8 @@ TEST(Gcode, ErrorsNameTheLine) {
     EXPECT_NE(error_of("G0 X5 Y0\nG3 X0 Y5.1 I-5 J0\n").second.find("radius mismatch"),
               std::string::npos);
     EXPECT_EQ(error_of("G0 X5 Y0\nG3 X0 Y5.1 I-5 J0\n").first, 2u);
-    EXPECT_NE(error_of("G0 X0 Y0\nG2 X10 Y0 R4\n").second.find("smaller than half"), std::string::npos);
+    EXPECT_NE(error_of("G0 X0 Y0\nG2 X10 Y0 R4\n").second.find("smaller than half"),
+              std::string::npos);
     EXPECT_EQ(error_of("G18\n").first, 1u);
     EXPECT_EQ(error_of("\n\nG1 X1 X2\n").first, 3u);
     EXPECT_EQ(error_of("X1\n").first, 1u);  // no motion mode yet

@@ -40,7 +40,7 @@ TEST_P(GridShapeTest, ChamfersCrossEveryEdgeAndNoVertexSitsOnOne) {
     for (const ExactEdge& e : s.edges) {
         double nearest = 1e300;
         for (const Vec3& p : s.mesh.positions) nearest = std::min(nearest, e.distance(p));
-        EXPECT_GT(nearest, 1e-9);          // the edge is lost to a chamfer...
+        EXPECT_GT(nearest, 1e-9);           // the edge is lost to a chamfer...
         EXPECT_LT(nearest, 1.5 * s.pitch);  // ...but sampled right next to it
     }
 }
@@ -63,7 +63,8 @@ TEST(GridShapes, DistanceHelpersAreExactAtKnownPoints) {
     EXPECT_NEAR(plate.distance_to_surface(Vec3(7.23 + 3.08, 6.17, 5.07)), 1.0, 1e-12);  // over rim
     const SampledShape l = sampled_l_block();
     EXPECT_NEAR(l.distance_to_surface(Vec3(7.33, 4.0, 5.19)), 1.0, 1e-12);  // in the notch
-    EXPECT_NEAR(l.distance_to_surface(Vec3(5.33, 4.0, 3.19)), std::sqrt(2.0), 1e-12);  // by the valley
+    EXPECT_NEAR(l.distance_to_surface(Vec3(5.33, 4.0, 3.19)), std::sqrt(2.0),
+                1e-12);  // by the valley
     const SampledShape box = sampled_rotated_box();
     EXPECT_NEAR(box.distance_to_surface(box.corners[0]), 0.0, 1e-12);
     EXPECT_EQ(box.edges.size(), 12u);

@@ -46,8 +46,9 @@ TEST(Job, RejectsBadJsonWithTheLineAndBadValuesWithTheKey) {
         return std::string("no error");
     };
     std::string bad = kJob;
-    EXPECT_NE(message(bad.replace(bad.find("\"pitch\""), 7, "\"pitsh\"")).find("pitsh: unknown key"),
-              std::string::npos);
+    EXPECT_NE(
+        message(bad.replace(bad.find("\"pitch\""), 7, "\"pitsh\"")).find("pitsh: unknown key"),
+        std::string::npos);
     bad = kJob;
     EXPECT_NE(message(bad.replace(bad.find("\"diameter\": 10"), 14, "\"diameter\": -1"))
                   .find("tools[0].diameter: must be positive"),
@@ -56,8 +57,9 @@ TEST(Job, RejectsBadJsonWithTheLineAndBadValuesWithTheKey) {
     EXPECT_NE(message(bad.replace(bad.find("\"corner_radius\": 1"), 18, "\"corner_radius\": 9"))
                   .find("tools[2]"),
               std::string::npos);
-    EXPECT_NE(message(R"({"stock": {"min": [0,0,0], "max": [1,1,1]}, "tools": []})").find("program"),
-              std::string::npos);
+    EXPECT_NE(
+        message(R"({"stock": {"min": [0,0,0], "max": [1,1,1]}, "tools": []})").find("program"),
+        std::string::npos);
     EXPECT_THROW(read_job("/nonexistent/job.json"), ReadError);
 }
 

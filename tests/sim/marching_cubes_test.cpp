@@ -93,12 +93,14 @@ TEST(MeshDexels, IsDeterministicAndBothAmbiguityRulesGiveClosedMeshes) {
     // Two balls touching diagonally make faces with four crossings.
     const Box3 box(Vec3(-3, -3, -3), Vec3(6, 6, 6));
     DexelGrid grid = sample_solid(grid_enclosing(box, 0.5), axis_box(box, 0));
-    for (int k = 0; k < 6; ++k) subtract(grid, Sphere(Vec3(0.7 * k, 0.55 * k, 0.3 * k), 1.2, 10 + k));
+    for (int k = 0; k < 6; ++k)
+        subtract(grid, Sphere(Vec3(0.7 * k, 0.55 * k, 0.3 * k), 1.2, 10 + k));
     const OracleMesh a = mesh_dexels(grid);
     const OracleMesh b = mesh_dexels(grid);
     EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
     EXPECT_EQ(a.mesh.positions, b.mesh.positions);
-    for (AmbiguousFaceRule rule : {AmbiguousFaceRule::ShorterCut, AmbiguousFaceRule::SeparateInside}) {
+    for (AmbiguousFaceRule rule :
+         {AmbiguousFaceRule::ShorterCut, AmbiguousFaceRule::SeparateInside}) {
         const OracleMesh m = mesh_dexels(grid, {.ambiguous_faces = rule});
         const MeshDiagnostics d = diagnose(m.mesh, build_connectivity(m.mesh));
         EXPECT_EQ(d.boundary_edges + d.nonmanifold_edges + d.inconsistent_edges, 0u);

@@ -36,7 +36,9 @@ ExactFace exact_face(const Vec3& p, std::int32_t id, const Vec3& a, const Vec3& 
     if (part == ToolPart::Bottom) return {std::abs(p.z() - std::min(a.z(), b.z())), Vec3::UnitZ()};
     EXPECT_EQ(part, ToolPart::Side);
     const Eigen::Vector2d d = (b - a).head<2>();
-    const double s = d.squaredNorm() > 0 ? std::clamp((p - a).head<2>().dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+    const double s = d.squaredNorm() > 0
+                         ? std::clamp((p - a).head<2>().dot(d) / d.squaredNorm(), 0.0, 1.0)
+                         : 0.0;
     const Eigen::Vector2d radial = p.head<2>() - (a.head<2>() + s * d);
     return {std::abs(radial.norm() - radius), -Vec3(radial.x(), radial.y(), 0).normalized()};
 }
@@ -75,7 +77,10 @@ TEST(Simulate, DrilledHoleIsClosedManifoldWithExactVertices) {
 TEST(Simulate, ThroughHoleWithFacesOnGridPlanesStaysClosed) {
     const std::map<int, Tool> tools{{1, Tool::make(ToolShape::FlatEnd, 6, 0, 40)}};
     const ToolPath path = program("T1 M6\nG0 X20 Y15 Z30\nG1 Z-5\nG1 X30\nG0 Z30\n");
-    const OracleMesh m = mesh_dexels(simulate(kStock, tools, path, {.pitch = 0.5, .grid_phase = 0.0, .helix_tolerance = 1e-3, .sweep = {}}).grid);
+    const OracleMesh m = mesh_dexels(
+        simulate(kStock, tools, path,
+                 {.pitch = 0.5, .grid_phase = 0.0, .helix_tolerance = 1e-3, .sweep = {}})
+            .grid);
     const MeshDiagnostics d = diagnose(m.mesh, build_connectivity(m.mesh));
     EXPECT_EQ(d.boundary_edges + d.nonmanifold_edges + d.inconsistent_edges, 0u);
     EXPECT_EQ(m.stats.clamped_vertices, 0u);

@@ -83,7 +83,8 @@ TEST(SweptVolume, BallAndBullNoseBottomsByHand) {
 TEST(SweptVolume, QuarterArcByHand) {
     const Tool small = Tool::make(ToolShape::FlatEnd, 2.0, 0.0, 10.0);
     for (double sign : {1.0, -1.0}) {  // G3 from 0° to 90°, and G2 from 90° to 0°
-        const ToolMotion m = sign > 0 ? arc({0, 0}, 5, 0, 0, kPi / 2) : arc({0, 0}, 5, 0, kPi / 2, -kPi / 2);
+        const ToolMotion m =
+            sign > 0 ? arc({0, 0}, 5, 0, 0, kPi / 2) : arc({0, 0}, 5, 0, kPi / 2, -kPi / 2);
         const SweptVolume v(small, m, 0);
         auto x = cut(v, Ray{0, Vec3(0, 3, 0.5)});
         ASSERT_EQ(x.size(), 1u);
@@ -116,12 +117,14 @@ std::vector<Interval> sampled(const Tool& tool, const ToolMotion& m, const Ray& 
         Vec3 p = m.start + f * (m.end - m.start);
         if (m.kind == ToolMotion::Kind::Arc) {
             const double a = m.start_angle + f * m.sweep;
-            p = Vec3(m.center.x() + m.radius * std::cos(a), m.center.y() + m.radius * std::sin(a), m.start.z());
+            p = Vec3(m.center.x() + m.radius * std::cos(a), m.center.y() + m.radius * std::sin(a),
+                     m.start.z());
         }
         const SweptVolume copy(tool, line(p, p), 0);
         copy.intersect(ray, all);
     }
-    std::sort(all.begin(), all.end(), [](const Interval& a, const Interval& b) { return a.enter.t < b.enter.t; });
+    std::sort(all.begin(), all.end(),
+              [](const Interval& a, const Interval& b) { return a.enter.t < b.enter.t; });
     std::vector<Interval> merged;
     for (const Interval& x : all) {
         if (!merged.empty() && x.enter.t <= merged.back().exit.t) {
@@ -179,18 +182,18 @@ TEST_P(SweepAgainstSampling, ExactIntervalsHugDenselySampledCopies) {
 
 INSTANTIATE_TEST_SUITE_P(
     Tools, SweepAgainstSampling,
-    ::testing::Values(
-        Case{"flat_line", kFlat, line(Vec3(1, 2, 3), Vec3(9, -4, 3))},
-        Case{"ball_line", kBall, line(Vec3(1, 2, 3), Vec3(9, -4, 3))},
-        Case{"bull_line", kBull, line(Vec3(1, 2, 3), Vec3(9, -4, 3))},
-        Case{"flat_ramp", kFlat, line(Vec3(1, 2, 3), Vec3(9, -4, -1)), 5e-3},  // rim: coarser reference
-        Case{"ball_ramp", kBall, line(Vec3(1, 2, 3), Vec3(9, -4, 5)), 5e-3},
-        Case{"bull_ramp", kBull, line(Vec3(1, 2, 3), Vec3(9, -4, 1)), 0.05, false},
-        Case{"flat_plunge", kFlat, line(Vec3(1, 2, 8), Vec3(1, 2, 3))},
-        Case{"ball_plunge", kBall, line(Vec3(1, 2, 3), Vec3(1, 2, 8))},
-        Case{"flat_arc", kFlat, arc({1, 2}, 7, 3, 0.4, 2.1)},
-        Case{"ball_arc", kBall, arc({1, 2}, 7, 3, 0.4, -4.1)},
-        Case{"bull_arc_tight", kBull, arc({1, 2}, 2, 3, 1.0, 5.0)}),
+    ::testing::Values(Case{"flat_line", kFlat, line(Vec3(1, 2, 3), Vec3(9, -4, 3))},
+                      Case{"ball_line", kBall, line(Vec3(1, 2, 3), Vec3(9, -4, 3))},
+                      Case{"bull_line", kBull, line(Vec3(1, 2, 3), Vec3(9, -4, 3))},
+                      Case{"flat_ramp", kFlat, line(Vec3(1, 2, 3), Vec3(9, -4, -1)),
+                           5e-3},  // rim: coarser reference
+                      Case{"ball_ramp", kBall, line(Vec3(1, 2, 3), Vec3(9, -4, 5)), 5e-3},
+                      Case{"bull_ramp", kBull, line(Vec3(1, 2, 3), Vec3(9, -4, 1)), 0.05, false},
+                      Case{"flat_plunge", kFlat, line(Vec3(1, 2, 8), Vec3(1, 2, 3))},
+                      Case{"ball_plunge", kBall, line(Vec3(1, 2, 3), Vec3(1, 2, 8))},
+                      Case{"flat_arc", kFlat, arc({1, 2}, 7, 3, 0.4, 2.1)},
+                      Case{"ball_arc", kBall, arc({1, 2}, 7, 3, 0.4, -4.1)},
+                      Case{"bull_arc_tight", kBull, arc({1, 2}, 2, 3, 1.0, 5.0)}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
 }  // namespace

@@ -132,16 +132,16 @@ SampledShape sampled_l_block(double pitch) {
     shape.surfaces[10] = plane(Vec3::UnitZ(), step_z);
 
     // The profile in xz, counter-clockwise seen from -y, with the face id of each side.
-    const std::vector<Eigen::Vector2d> profile{{lo.x(), lo.z()},   {hi.x(), lo.z()},
-                                               {hi.x(), step_z},   {step_x, step_z},
-                                               {step_x, hi.z()},   {lo.x(), hi.z()}};
+    const std::vector<Eigen::Vector2d> profile{{lo.x(), lo.z()}, {hi.x(), lo.z()},
+                                               {hi.x(), step_z}, {step_x, step_z},
+                                               {step_x, hi.z()}, {lo.x(), hi.z()}};
     const std::vector<std::int32_t> side_face{4, 1, 10, 6, 5, 0};  // side k runs from k to k+1
     const auto at = [](const Eigen::Vector2d& xz, double y) { return Vec3(xz.x(), y, xz.y()); };
     for (std::size_t k = 0; k < profile.size(); ++k) {
         const std::size_t next = (k + 1) % profile.size();
         const std::int32_t before = side_face[(k + profile.size() - 1) % profile.size()];
-        shape.edges.push_back(segment(at(profile[k], lo.y()), at(profile[k], hi.y()), before,
-                                      side_face[k], k == 3));
+        shape.edges.push_back(
+            segment(at(profile[k], lo.y()), at(profile[k], hi.y()), before, side_face[k], k == 3));
         for (const auto& [y, face] : {std::pair{lo.y(), 2}, std::pair{hi.y(), 3}}) {
             shape.edges.push_back(
                 segment(at(profile[k], y), at(profile[next], y), side_face[k], face));
@@ -150,8 +150,8 @@ SampledShape sampled_l_block(double pitch) {
         shape.corners.push_back(at(profile[k], hi.y()));
     }
     shape.scale = block.sizes().maxCoeff();
-    const Box3 lower(lo, Vec3(hi.x(), hi.y(), step_z)), upper(Vec3(lo.x(), lo.y(), step_z),
-                                                              Vec3(step_x, hi.y(), hi.z()));
+    const Box3 lower(lo, Vec3(hi.x(), hi.y(), step_z)),
+        upper(Vec3(lo.x(), lo.y(), step_z), Vec3(step_x, hi.y(), hi.z()));
     shape.distance_to_surface = [=](const Vec3& p) {
         const bool inside = block.contains(p) && !(p.x() > step_x && p.z() > step_z);
         if (inside) return std::min(box_surface_distance(block, p), point_distance(notch, p));
@@ -200,8 +200,8 @@ SampledShape sampled_drilled_plate(double pitch) {
             return (p - nearest_in_plate).norm();
         }
         // Over or in the hole: the nearest material is on the wall, at most at its rims.
-        const Eigen::Vector2d direction = r > 0.0 ? Eigen::Vector2d(radial / r)
-                                                  : Eigen::Vector2d::UnitX();
+        const Eigen::Vector2d direction =
+            r > 0.0 ? Eigen::Vector2d(radial / r) : Eigen::Vector2d::UnitX();
         const double z = std::clamp(p.z(), plate.min().z(), plate.max().z());
         const Eigen::Vector2d on_wall = axis + radius * direction;
         return (p - Vec3(on_wall.x(), on_wall.y(), z)).norm();

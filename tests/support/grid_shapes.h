@@ -21,11 +21,11 @@ namespace resharp::test {
 struct ExactSurface {
     enum class Kind { Plane, Cylinder };
     Kind kind = Kind::Plane;
-    Vec3 normal = Vec3::UnitZ();      ///< Plane: unit outward normal
-    double offset = 0.0;              ///< Plane: normal·x on the plane, mm
-    Eigen::Vector2d axis{0.0, 0.0};   ///< Cylinder: (x, y) of its vertical axis, mm
-    double radius = 0.0;              ///< Cylinder radius, mm
-    bool is_hole = true;              ///< Cylinder: material outside it (normals point to the axis)
+    Vec3 normal = Vec3::UnitZ();     ///< Plane: unit outward normal
+    double offset = 0.0;             ///< Plane: normal·x on the plane, mm
+    Eigen::Vector2d axis{0.0, 0.0};  ///< Cylinder: (x, y) of its vertical axis, mm
+    double radius = 0.0;             ///< Cylinder radius, mm
+    bool is_hole = true;             ///< Cylinder: material outside it (normals point to the axis)
 
     /// Distance from p to the plane or cylinder.
     double distance(const Vec3& p) const;
@@ -38,10 +38,10 @@ struct ExactEdge {
     enum class Kind { Segment, Circle };
     Kind kind = Kind::Segment;
     Vec3 a = Vec3::Zero(), b = Vec3::Zero();  ///< Segment ends
-    Vec3 center = Vec3::Zero();                ///< Circle centre (the circle lies at z = center.z)
-    double radius = 0.0;                       ///< Circle radius
+    Vec3 center = Vec3::Zero();               ///< Circle centre (the circle lies at z = center.z)
+    double radius = 0.0;                      ///< Circle radius
     std::int32_t surface_a = -1, surface_b = -1;  ///< ids of the two faces meeting here
-    bool is_concave = false;                   ///< true for an inner (valley) edge
+    bool is_concave = false;                      ///< true for an inner (valley) edge
 
     /// Distance from p to the edge curve.
     double distance(const Vec3& p) const;
@@ -49,14 +49,14 @@ struct ExactEdge {
 
 /// A shape sampled on a tri-dexel grid and meshed, with its exact description.
 struct SampledShape {
-    Mesh mesh;                                  ///< closed, manifold, outward oriented
-    std::vector<Vec3> exact_normals;            ///< #V exact outward normals
-    std::vector<std::int32_t> surface_ids;      ///< #V keys of `surfaces`
-    double pitch = 0.5;                         ///< grid pitch h, mm
-    double scale = 1.0;                         ///< largest extent of the shape, mm
+    Mesh mesh;                                      ///< closed, manifold, outward oriented
+    std::vector<Vec3> exact_normals;                ///< #V exact outward normals
+    std::vector<std::int32_t> surface_ids;          ///< #V keys of `surfaces`
+    double pitch = 0.5;                             ///< grid pitch h, mm
+    double scale = 1.0;                             ///< largest extent of the shape, mm
     std::map<std::int32_t, ExactSurface> surfaces;  ///< every face, by surface id
-    std::vector<ExactEdge> edges;               ///< every sharp edge
-    std::vector<Vec3> corners;                  ///< every corner (where three or more faces meet)
+    std::vector<ExactEdge> edges;                   ///< every sharp edge
+    std::vector<Vec3> corners;  ///< every corner (where three or more faces meet)
     std::function<double(const Vec3&)> distance_to_surface;  ///< exact, unsigned, mm
     sim::MeshingStats stats;
 };

@@ -1,12 +1,11 @@
 #pragma once
 /// Basic value types shared by every stage.
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products
 #include <array>
 #include <cstdint>
 #include <limits>
-
-#include <Eigen/Core>
-#include <Eigen/Geometry>  // cross products
 
 namespace resharp {
 

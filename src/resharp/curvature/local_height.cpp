@@ -1,10 +1,10 @@
 #include "resharp/curvature/local_height.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <tbb/parallel_for.h>
 
 namespace resharp {
 

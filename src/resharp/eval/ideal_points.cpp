@@ -54,11 +54,15 @@ std::vector<IdealPoint> find_ideal_points(const Mesh& mesh, const Oracle& oracle
         if (c.twin[h] != kNoIndex && c.twin[h] < h) continue;  // each edge once
         const Index u = tail_vertex(mesh, h), v = head_vertex(mesh, h);
         if (!is_sharp_junction(oracle, u, v, min_cosine)) continue;
-        const auto m = edge_point(mesh.positions[u], oracle.normals[u], mesh.positions[v],
-                                  oracle.normals[v]);
+        const auto m =
+            edge_point(mesh.positions[u], oracle.normals[u], mesh.positions[v], oracle.normals[v]);
         if (m) {
-            points.push_back({*m, IdealKind::Edge, face_of(h), {u, v, kNoIndex},
-                              c.twin[h] == kNoIndex, beyond_chord(mesh, c, oracle, h, u, v, *m)});
+            points.push_back({*m,
+                              IdealKind::Edge,
+                              face_of(h),
+                              {u, v, kNoIndex},
+                              c.twin[h] == kNoIndex,
+                              beyond_chord(mesh, c, oracle, h, u, v, *m)});
         }
     }
     for (Index f = 0; f < mesh.face_count(); ++f) {
@@ -71,9 +75,9 @@ std::vector<IdealPoint> find_ideal_points(const Mesh& mesh, const Oracle& oracle
             !is_sharp_junction(oracle, t[2], t[0], min_cosine)) {
             continue;
         }
-        const auto m = corner_point(mesh.positions[t[0]], oracle.normals[t[0]],
-                                    mesh.positions[t[1]], oracle.normals[t[1]],
-                                    mesh.positions[t[2]], oracle.normals[t[2]]);
+        const auto m =
+            corner_point(mesh.positions[t[0]], oracle.normals[t[0]], mesh.positions[t[1]],
+                         oracle.normals[t[1]], mesh.positions[t[2]], oracle.normals[t[2]]);
         if (m) points.push_back({*m, IdealKind::Corner, f, {t[0], t[1], t[2]}});
     }
     return points;
@@ -87,7 +91,8 @@ std::vector<double> nearest_distances(std::span<const IdealPoint> ideal,
     std::vector<double> distance(ideal.size());
     for (std::size_t i = 0; i < ideal.size(); ++i) {
         const Vec3& p = ideal[i].position;
-        const double d = grid.nearest(p, [&](Index j) { return (candidates[j] - p).norm(); }).second;
+        const double d =
+            grid.nearest(p, [&](Index j) { return (candidates[j] - p).norm(); }).second;
         distance[i] = d <= search_radius ? d : std::numeric_limits<double>::infinity();
     }
     return distance;

@@ -12,8 +12,8 @@ namespace resharp::eval {
 
 /// The exact data the simulator writes beside its mesh, one entry per vertex.
 struct Oracle {
-    std::vector<Vec3> normals;             ///< #V exact unit surface normals
-    std::vector<std::int32_t> surfaces;    ///< #V id of the surface each vertex lies on
+    std::vector<Vec3> normals;           ///< #V exact unit surface normals
+    std::vector<std::int32_t> surfaces;  ///< #V id of the surface each vertex lies on
 };
 
 /// Where an ideal sharp point comes from.
@@ -25,7 +25,7 @@ enum class IdealKind : std::uint8_t {
 struct IdealPoint {
     Vec3 position = Vec3::Zero();
     IdealKind kind = IdealKind::Edge;
-    Index face = kNoIndex;          ///< a face holding the crossing edge, or the corner triangle
+    Index face = kNoIndex;  ///< a face holding the crossing edge, or the corner triangle
     Index vertices[3] = {kNoIndex, kNoIndex, kNoIndex};  ///< edge: two, corner: three
     bool on_boundary = false;  ///< a crossing edge with one face: left alone by restoration
     /// A crossing edge whose exact tangent planes meet beyond its chord: eq. 5.4 fails even with

@@ -60,14 +60,22 @@ std::optional<MissCause> edge_detection_cause(const Segmentation& s, const Ideal
 
 std::string_view miss_cause_name(MissCause cause) {
     switch (cause) {
-        case MissCause::BeyondChord: return "beyond_chord";
-        case MissCause::NoFeaturePatch: return "no_feature_patch";
-        case MissCause::SamePatch: return "same_patch";
-        case MissCause::NoEdgeVertex: return "no_edge_vertex";
-        case MissCause::CornerNotDetected: return "corner_not_detected";
-        case MissCause::NotDetected: return "not_detected";
-        case MissCause::NotInserted: return "not_inserted";
-        case MissCause::PlacedFar: return "placed_far";
+        case MissCause::BeyondChord:
+            return "beyond_chord";
+        case MissCause::NoFeaturePatch:
+            return "no_feature_patch";
+        case MissCause::SamePatch:
+            return "same_patch";
+        case MissCause::NoEdgeVertex:
+            return "no_edge_vertex";
+        case MissCause::CornerNotDetected:
+            return "corner_not_detected";
+        case MissCause::NotDetected:
+            return "not_detected";
+        case MissCause::NotInserted:
+            return "not_inserted";
+        case MissCause::PlacedFar:
+            return "placed_far";
     }
     return "unknown";
 }
@@ -91,7 +99,7 @@ MissCauses find_miss_causes(const Mesh& input, const Mesh& output,
         if (p.beyond_chord) {
             cause = MissCause::BeyondChord;
         } else if (is_corner && !segmentation.face_role.empty() &&
-            segmentation.face_role[p.face] != BandRole::Corner) {
+                   segmentation.face_role[p.face] != BandRole::Corner) {
             cause = MissCause::CornerNotDetected;
         } else if (!is_corner) {
             cause = edge_detection_cause(segmentation, p);
@@ -99,7 +107,7 @@ MissCauses find_miss_causes(const Mesh& input, const Mesh& output,
         if (!cause) {
             const std::span<const Index> ends(p.vertices, is_corner ? 3 : 2);
             cause = inserted_between(n, ends, first_new) ? MissCause::PlacedFar
-                                                          : MissCause::NotInserted;
+                                                         : MissCause::NotInserted;
         }
         auto& counts = is_corner ? causes.corners : causes.edges;
         ++counts[static_cast<std::size_t>(*cause)];

@@ -15,15 +15,15 @@ namespace resharp::eval {
 
 /// The causes, in the order the pipeline meets them, after the one no stage could help.
 enum class MissCause {
-    BeyondChord,       ///< the ideal point lies beyond the edge's chord: no split reaches it
-    NoFeaturePatch,    ///< a vertex of the crossing edge joined no feature patch (§4)
-    SamePatch,         ///< both vertices joined one feature patch (§4 merged or grew across)
-    NoEdgeVertex,      ///< two patches, but neither vertex is an edge vertex (§3 missed it)
-    CornerNotDetected, ///< a corner triangle not classified as a corner triangle
-    NotDetected,       ///< no labels per vertex: the faces are not edge or corner triangles
-    NotInserted,       ///< detected, but no point was inserted there (flip, spike or quality
-                       ///< test, or no feature normal)
-    PlacedFar,         ///< a point was inserted there, farther than tau (feature normals off)
+    BeyondChord,        ///< the ideal point lies beyond the edge's chord: no split reaches it
+    NoFeaturePatch,     ///< a vertex of the crossing edge joined no feature patch (§4)
+    SamePatch,          ///< both vertices joined one feature patch (§4 merged or grew across)
+    NoEdgeVertex,       ///< two patches, but neither vertex is an edge vertex (§3 missed it)
+    CornerNotDetected,  ///< a corner triangle not classified as a corner triangle
+    NotDetected,        ///< no labels per vertex: the faces are not edge or corner triangles
+    NotInserted,        ///< detected, but no point was inserted there (flip, spike or quality
+                        ///< test, or no feature normal)
+    PlacedFar,          ///< a point was inserted there, farther than tau (feature normals off)
 };
 inline constexpr std::size_t kMissCauseCount = 8;
 

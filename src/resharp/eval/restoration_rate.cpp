@@ -14,8 +14,8 @@ using detail::Box3;
 using detail::UniformGrid;
 
 UniformGrid grid_over(std::span<const Vec3> points, double cell) {
-    return UniformGrid(points.size(), [&](std::size_t i) { return Box3(points[i], points[i]); },
-                       cell);
+    return UniformGrid(
+        points.size(), [&](std::size_t i) { return Box3(points[i], points[i]); }, cell);
 }
 
 double nearest_distance(const UniformGrid& grid, std::span<const Vec3> points, const Vec3& p) {
@@ -80,9 +80,8 @@ RestorationScore score_restoration(const Mesh& input, const Mesh& output,
     s.rate = rate(s.restored_edges + s.restored_corners, s.ideal_edges + s.ideal_corners);
     s.rate_edges = rate(s.restored_edges, s.ideal_edges);
     s.rate_corners = rate(s.restored_corners, s.ideal_corners);
-    s.rate_within_reach =
-        rate(s.restored_edges + s.restored_corners - s.restored_beyond_chord,
-             s.ideal_edges + s.ideal_corners - s.beyond_chord);
+    s.rate_within_reach = rate(s.restored_edges + s.restored_corners - s.restored_beyond_chord,
+                               s.ideal_edges + s.ideal_corners - s.beyond_chord);
 
     // New vertices to ideal points and to the exact surface.
     const UniformGrid ideal_grid = grid_over(counted, h);

@@ -17,9 +17,9 @@ struct RestorationOptions {
 };
 
 struct RestorationScore {
-    std::size_t ideal_edges = 0;       ///< ideal points of crossing edges (boundary ones left out)
-    std::size_t ideal_corners = 0;     ///< ideal points of corner triangles
-    std::size_t restored_edges = 0;    ///< of those, with a new vertex within tau
+    std::size_t ideal_edges = 0;     ///< ideal points of crossing edges (boundary ones left out)
+    std::size_t ideal_corners = 0;   ///< ideal points of corner triangles
+    std::size_t restored_edges = 0;  ///< of those, with a new vertex within tau
     std::size_t restored_corners = 0;
     double rate = 1.0;          ///< (restored edges + corners) / (ideal edges + corners); 1 if none
     double rate_edges = 1.0;    ///< restored_edges / ideal_edges; 1 if none

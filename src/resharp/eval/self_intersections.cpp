@@ -1,10 +1,10 @@
 #include "resharp/eval/self_intersections.h"
 
-#include <algorithm>
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
 
 namespace resharp::eval {
 namespace {
@@ -22,9 +22,9 @@ std::vector<std::pair<Index, Index>> self_intersecting_pairs(const Mesh& mesh) {
     std::vector<Index> input_face;
     for (std::size_t f = 0; f < mesh.face_count(); ++f) {
         const Triangle& t = mesh.triangles[f];
-        const auto face = surface.add_face(SurfaceMesh::Vertex_index(t[0]),
-                                           SurfaceMesh::Vertex_index(t[1]),
-                                           SurfaceMesh::Vertex_index(t[2]));
+        const auto face =
+            surface.add_face(SurfaceMesh::Vertex_index(t[0]), SurfaceMesh::Vertex_index(t[1]),
+                             SurfaceMesh::Vertex_index(t[2]));
         if (face != SurfaceMesh::null_face()) input_face.push_back(static_cast<Index>(f));
     }
     std::vector<std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>> pairs;

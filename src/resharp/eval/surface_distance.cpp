@@ -1,12 +1,12 @@
 #include "resharp/eval/surface_distance.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <numeric>
-
-#include <tbb/parallel_for.h>
 
 #include "resharp/core/errors.h"
 #include "resharp/eval/uniform_grid.h"
@@ -47,8 +47,8 @@ struct OneWay {
 };
 
 UniformGrid point_grid(const std::vector<Vec3>& points, double cell) {
-    return UniformGrid(points.size(), [&](std::size_t i) { return Box3(points[i], points[i]); },
-                       cell);
+    return UniformGrid(
+        points.size(), [&](std::size_t i) { return Box3(points[i], points[i]); }, cell);
 }
 
 template <class Body>
@@ -63,18 +63,23 @@ OneWay samples_to_mesh(const SurfaceSamples& s, const Mesh& mesh, double cell) {
         const Vec3& a = mesh.positions[t[0]];
         face_normal[f] = (mesh.positions[t[1]] - a).cross(mesh.positions[t[2]] - a).normalized();
     }
-    const UniformGrid grid(mesh.face_count(), [&](std::size_t f) {
-        const Triangle& t = mesh.triangles[f];
-        Box3 b(mesh.positions[t[0]], mesh.positions[t[0]]);
-        return b.extend(mesh.positions[t[1]]).extend(mesh.positions[t[2]]);
-    }, cell);
+    const UniformGrid grid(
+        mesh.face_count(),
+        [&](std::size_t f) {
+            const Triangle& t = mesh.triangles[f];
+            Box3 b(mesh.positions[t[0]], mesh.positions[t[0]]);
+            return b.extend(mesh.positions[t[1]]).extend(mesh.positions[t[2]]);
+        },
+        cell);
     OneWay out{std::vector<double>(s.size()), std::vector<double>(s.size())};
     parallel_for_each(s.size(), [&](std::size_t i) {
         const Vec3& p = s.points[i];
         const auto [f, d] = grid.nearest(p, [&](Index face) {
             const Triangle& t = mesh.triangles[face];
             return (closest_on_triangle(p, mesh.positions[t[0]], mesh.positions[t[1]],
-                                        mesh.positions[t[2]]) - p).norm();
+                                        mesh.positions[t[2]]) -
+                    p)
+                .norm();
         });
         out.distance[i] = d;
         const double dot = std::abs(s.normals[i].dot(face_normal[f]));
@@ -110,8 +115,7 @@ double f_score(double precision, double recall) {
 }
 
 /// The samples of `s` with a neighbour within `radius` whose normal satisfies `is_apart`.
-SurfaceSamples edge_samples(const SurfaceSamples& s, double radius, double cell,
-                            auto&& is_apart) {
+SurfaceSamples edge_samples(const SurfaceSamples& s, double radius, double cell, auto&& is_apart) {
     const UniformGrid grid = point_grid(s.points, cell);
     std::vector<std::uint8_t> flag(s.size(), 0);
     parallel_for_each(s.size(), [&](std::size_t i) {
@@ -196,9 +200,8 @@ SurfaceMetrics compare_surfaces(const Mesh& mesh, const SurfaceSamples& mesh_sam
         return std::abs(a.dot(b)) < max_abs_dot;
     });
     const double min_cos = std::cos(o.edge_dihedral_deg * std::numbers::pi / 180.0);
-    m.edges_dihedral = edge_metrics(exact, mesh_samples, o, [&](const Vec3& a, const Vec3& b) {
-        return a.dot(b) < min_cos;
-    });
+    m.edges_dihedral = edge_metrics(
+        exact, mesh_samples, o, [&](const Vec3& a, const Vec3& b) { return a.dot(b) < min_cos; });
     return m;
 }
 

@@ -27,13 +27,13 @@
 namespace resharp::eval {
 
 struct SurfaceMetricsOptions {
-    double pitch = 0.5;                  ///< h, mm: the unit of every length below
-    double edge_radius = 0.5;            ///< r of the edge-sample test, in h (NDC: 0.256 h)
-    double edge_max_abs_dot = 0.2;       ///< NDC edge sample: a neighbour with |n . n'| below
-    double edge_dihedral_deg = 30.0;     ///< dihedral variant: a neighbour more than this apart
-    double f1_threshold = 0.192;         ///< F1 distance threshold, in h (NDC: 0.003)
-    double edge_f1_threshold = 0.32;     ///< EF1 distance threshold, in h (NDC: 0.005)
-    double cell = 1.0;                   ///< cell of the search grids, in h
+    double pitch = 0.5;               ///< h, mm: the unit of every length below
+    double edge_radius = 0.5;         ///< r of the edge-sample test, in h (NDC: 0.256 h)
+    double edge_max_abs_dot = 0.2;    ///< NDC edge sample: a neighbour with |n . n'| below
+    double edge_dihedral_deg = 30.0;  ///< dihedral variant: a neighbour more than this apart
+    double f1_threshold = 0.192;      ///< F1 distance threshold, in h (NDC: 0.003)
+    double edge_f1_threshold = 0.32;  ///< EF1 distance threshold, in h (NDC: 0.005)
+    double cell = 1.0;                ///< cell of the search grids, in h
 };
 
 /// Edge Chamfer Distance and Edge F-score for one edge criterion.
@@ -47,14 +47,14 @@ struct EdgeMetrics {
 struct SurfaceMetrics {
     std::size_t exact_samples = 0;
     std::size_t mesh_samples = 0;
-    double chamfer_l1 = 0.0;   ///< mm, mean of the two mean distances
-    double chamfer_l2 = 0.0;   ///< mm^2, sum of the two mean squared distances (NDC's CD)
-    double hausdorff = 0.0;    ///< mm, largest distance either way
-    double hausdorff_p99 = 0.0;  ///< mm, 99th percentile of all distances of both ways
+    double chamfer_l1 = 0.0;          ///< mm, mean of the two mean distances
+    double chamfer_l2 = 0.0;          ///< mm^2, sum of the two mean squared distances (NDC's CD)
+    double hausdorff = 0.0;           ///< mm, largest distance either way
+    double hausdorff_p99 = 0.0;       ///< mm, 99th percentile of all distances of both ways
     double normal_consistency = 0.0;  ///< 0..1, mean |n . n'| averaged over both ways
-    double f1 = 0.0;           ///< 0..1, F-score at f1_threshold
-    EdgeMetrics edges_ndc;     ///< edge samples by |n . n'| < edge_max_abs_dot
-    EdgeMetrics edges_dihedral;  ///< edge samples by dihedral angle > edge_dihedral_deg
+    double f1 = 0.0;                  ///< 0..1, F-score at f1_threshold
+    EdgeMetrics edges_ndc;            ///< edge samples by |n . n'| < edge_max_abs_dot
+    EdgeMetrics edges_dihedral;       ///< edge samples by dihedral angle > edge_dihedral_deg
 };
 
 /// Compares `mesh` (sampled as `mesh_samples`, see sample_mesh) with the exact surface

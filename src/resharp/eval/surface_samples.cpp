@@ -63,12 +63,14 @@ void sample_face(const Vec3 (&v)[3], const sim::GridSpec& spec, SurfaceSamples& 
                 const Eigen::Vector2d q(spec.node(b, i), spec.node(c, j));
                 const double w0 = orient(p[1], p[2], q), w1 = orient(p[2], p[0], q),
                              w2 = orient(p[0], p[1], q);
-                const bool inside = (w0 >= 0 && w1 >= 0 && w2 >= 0) || (w0 <= 0 && w1 <= 0 && w2 <= 0);
+                const bool inside =
+                    (w0 >= 0 && w1 >= 0 && w2 >= 0) || (w0 <= 0 && w1 <= 0 && w2 <= 0);
                 if (!inside) continue;
                 Vec3 x;
                 x[b] = q.x();
                 x[c] = q.y();
-                x[axis] = v[0][axis] - (n[b] * (q.x() - v[0][b]) + n[c] * (q.y() - v[0][c])) / n[axis];
+                x[axis] =
+                    v[0][axis] - (n[b] * (q.x() - v[0][b]) + n[c] * (q.y() - v[0][c])) / n[axis];
                 out.points.push_back(x);
                 out.normals.push_back(unit);
             }

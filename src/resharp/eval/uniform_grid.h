@@ -7,6 +7,7 @@
 /// cell), so a dense grid answers in a few cell visits without the tree's descent, builds in two
 /// linear passes (count, scatter: no per-cell allocation) and is trivially shared by threads.
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cstddef>
 #include <cstdlib>
@@ -14,8 +15,6 @@
 #include <limits>
 #include <utility>
 #include <vector>
-
-#include <Eigen/Geometry>
 
 #include "resharp/core/types.h"
 
@@ -100,8 +99,8 @@ std::pair<Index, double> UniformGrid::nearest(const Vec3& p, Distance&& distance
                 const bool face = std::abs(z - home.z()) == k || std::abs(y - home.y()) == k;
                 const int step = face ? 1 : std::max(1, hi.x() - lo.x());
                 for (int x = lo.x(); x <= hi.x(); x += step) {
-                    const int ring = std::max({std::abs(x - home.x()), std::abs(y - home.y()),
-                                               std::abs(z - home.z())});
+                    const int ring = std::max(
+                        {std::abs(x - home.x()), std::abs(y - home.y()), std::abs(z - home.z())});
                     if (ring == k) visit_cell(x, y, z, consider);
                 }
             }

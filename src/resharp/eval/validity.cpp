@@ -19,7 +19,8 @@ double smallest_angle_deg(const Mesh& mesh) {
     for (const Triangle& t : mesh.triangles) {
         for (int k = 0; k < 3; ++k) {
             const Vec3& p = mesh.positions[t[k]];
-            const Vec3 a = mesh.positions[t[(k + 1) % 3]] - p, b = mesh.positions[t[(k + 2) % 3]] - p;
+            const Vec3 a = mesh.positions[t[(k + 1) % 3]] - p,
+                       b = mesh.positions[t[(k + 2) % 3]] - p;
             const double area2 = a.cross(b).norm();
             if (area2 == 0.0) break;  // degenerate: counted apart
             smallest = std::min(smallest, std::atan2(area2, a.dot(b)) * 180.0 / std::numbers::pi);
@@ -97,9 +98,10 @@ std::size_t count_flipped_faces(const Mesh& input, const Mesh& output, const Ora
         }
         if (!has_input_vertex && exact.size() > 0) {
             const Vec3 centroid = (a + b + c) / 3.0;
-            const Index s = exact_grid.nearest(centroid, [&](Index i) {
-                return (exact.points[i] - centroid).norm();
-            }).first;
+            const Index s =
+                exact_grid
+                    .nearest(centroid, [&](Index i) { return (exact.points[i] - centroid).norm(); })
+                    .first;
             is_flipped = n.dot(exact.normals[s]) <= 0.0;
         }
         flipped += is_flipped;

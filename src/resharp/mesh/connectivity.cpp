@@ -1,8 +1,8 @@
 #include "resharp/mesh/connectivity.h"
 
-#include <algorithm>
-
 #include <tbb/parallel_for.h>
+
+#include <algorithm>
 
 #include "resharp/core/errors.h"
 
@@ -56,12 +56,14 @@ Index halfedge_of(const EdgeEntry& e) { return e.tagged_halfedge & ~kForwardBit;
 EdgeKind kind_of_edge(std::span<const EdgeEntry> on_edge, Index low) {
     if (on_edge[0].other == low) return EdgeKind::NonManifold;  // collapsed: a degenerate face's
     switch (on_edge.size()) {
-        case 1: return EdgeKind::Boundary;
+        case 1:
+            return EdgeKind::Boundary;
         case 2:
             return (on_edge[0].tagged_halfedge ^ on_edge[1].tagged_halfedge) & kForwardBit
                        ? EdgeKind::Manifold
                        : EdgeKind::Inconsistent;
-        default: return EdgeKind::NonManifold;
+        default:
+            return EdgeKind::NonManifold;
     }
 }
 

@@ -23,10 +23,10 @@ inline Index head_vertex(const Mesh& mesh, Index h) {
 
 /// What kind of edge a half-edge lies on.
 enum class EdgeKind : unsigned char {
-    Manifold,       ///< exactly one twin, running the other way
-    Boundary,       ///< no other face has this edge
-    NonManifold,    ///< three or more faces share the edge
-    Inconsistent,   ///< two faces share it running the same way (orientation flips here)
+    Manifold,      ///< exactly one twin, running the other way
+    Boundary,      ///< no other face has this edge
+    NonManifold,   ///< three or more faces share the edge
+    Inconsistent,  ///< two faces share it running the same way (orientation flips here)
 };
 
 struct Connectivity {

@@ -94,10 +94,17 @@ MeshDiagnostics diagnose(const Mesh& mesh, const Connectivity& c) {
         if (c.edge_kind[h] == EdgeKind::Manifold) continue;  // almost all: no lookup needed
         if (tail_vertex(mesh, hi) == head_vertex(mesh, hi)) continue;  // degenerate face's edge
         switch (c.edge_kind[h]) {
-            case EdgeKind::Boundary: ++d.boundary_edges; break;
-            case EdgeKind::Inconsistent: d.inconsistent_edges += is_first_halfedge_of_edge(mesh, c, hi); break;
-            case EdgeKind::NonManifold: d.nonmanifold_edges += is_first_halfedge_of_edge(mesh, c, hi); break;
-            case EdgeKind::Manifold: break;
+            case EdgeKind::Boundary:
+                ++d.boundary_edges;
+                break;
+            case EdgeKind::Inconsistent:
+                d.inconsistent_edges += is_first_halfedge_of_edge(mesh, c, hi);
+                break;
+            case EdgeKind::NonManifold:
+                d.nonmanifold_edges += is_first_halfedge_of_edge(mesh, c, hi);
+                break;
+            case EdgeKind::Manifold:
+                break;
         }
     }
 

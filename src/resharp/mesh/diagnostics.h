@@ -10,14 +10,14 @@
 namespace resharp {
 
 struct MeshDiagnostics {
-    std::size_t boundary_edges = 0;       ///< edges with one face
-    std::size_t nonmanifold_edges = 0;    ///< edges with three or more faces
-    std::size_t inconsistent_edges = 0;   ///< edges whose two faces disagree on orientation
-    std::size_t nonmanifold_vertices = 0; ///< vertices whose faces form more than one fan
-    std::size_t degenerate_faces = 0;     ///< faces with a repeated vertex or zero area
-    std::size_t duplicate_faces = 0;      ///< faces with the same three vertices as an earlier one
-    std::size_t isolated_vertices = 0;    ///< vertices no face uses
-    std::size_t components = 0;           ///< edge-connected pieces of the surface
+    std::size_t boundary_edges = 0;        ///< edges with one face
+    std::size_t nonmanifold_edges = 0;     ///< edges with three or more faces
+    std::size_t inconsistent_edges = 0;    ///< edges whose two faces disagree on orientation
+    std::size_t nonmanifold_vertices = 0;  ///< vertices whose faces form more than one fan
+    std::size_t degenerate_faces = 0;      ///< faces with a repeated vertex or zero area
+    std::size_t duplicate_faces = 0;       ///< faces with the same three vertices as an earlier one
+    std::size_t isolated_vertices = 0;     ///< vertices no face uses
+    std::size_t components = 0;            ///< edge-connected pieces of the surface
 
     /// True when the mesh is a closed, oriented 2-manifold without degenerate faces.
     bool is_clean_closed_manifold() const {

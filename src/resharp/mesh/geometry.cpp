@@ -1,9 +1,9 @@
 #include "resharp/mesh/geometry.h"
 
+#include <tbb/parallel_for.h>
+
 #include <cmath>
 #include <numbers>
-
-#include <tbb/parallel_for.h>
 
 #include "resharp/core/assert.h"
 
@@ -63,7 +63,8 @@ SurfaceNormals surface_normals(const Mesh& mesh, const Connectivity& connectivit
         for (Index f : connectivity.faces_around(static_cast<Index>(v))) sum += n.face[f];
         n.vertex[v] = unit_or_zero(sum);
     });
-    for_each_index(n.face.size(), 8192, [&](std::size_t f) { n.face[f] = unit_or_zero(n.face[f]); });
+    for_each_index(n.face.size(), 8192,
+                   [&](std::size_t f) { n.face[f] = unit_or_zero(n.face[f]); });
     return n;
 }
 

@@ -35,16 +35,16 @@ struct RestoreReport {
     std::size_t output_vertices = 0;
     std::size_t output_triangles = 0;
 
-    std::size_t edge_vertices = 0;             ///< after refinement (§3)
-    std::size_t clustered_edge_vertices = 0;   ///< straight out of k-means
+    std::size_t edge_vertices = 0;            ///< after refinement (§3)
+    std::size_t clustered_edge_vertices = 0;  ///< straight out of k-means
     std::size_t isolated_edge_vertices_removed = 0;
     std::size_t bridge_vertices_added = 0;
     std::size_t flat_edge_vertices_removed = 0;
     int kmeans_iterations = 0;
 
-    std::size_t feature_patches = 0;   ///< after absorbing and merging
-    std::size_t grown_patches = 0;     ///< straight out of region growing
-    std::size_t band_patches = 0;      ///< grown patches recognised as chamfer bands
+    std::size_t feature_patches = 0;  ///< after absorbing and merging
+    std::size_t grown_patches = 0;    ///< straight out of region growing
+    std::size_t band_patches = 0;     ///< grown patches recognised as chamfer bands
     std::size_t tiny_patches_absorbed = 0;
     std::size_t patch_merges = 0;
 
@@ -58,7 +58,7 @@ struct RestoreReport {
     std::size_t refused_by_spike_test = 0;   ///< §5.3
     std::size_t refused_missing_normal = 0;  ///< a vertex with no face on its own feature
     std::size_t refused_by_quality = 0;      ///< a split piece would flip or collapse
-    std::size_t refused_by_guard = 0;  ///< a split piece would turn against the face it
+    std::size_t refused_by_guard = 0;        ///< a split piece would turn against the face it
                                        ///< replaces, or meet another triangle (docs/method.md)
     std::size_t split_triangles = 0;
 

@@ -1,9 +1,9 @@
 #include "resharp/pipeline/restore.h"
 
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <string>
-
-#include <tbb/task_arena.h>
 
 #include "resharp/core/errors.h"
 #include "resharp/core/stage_timer.h"
@@ -21,14 +21,22 @@ namespace resharp {
 
 std::string_view stage_name(Stage stage) {
     switch (stage) {
-        case Stage::MeshBuilding: return "mesh building";
-        case Stage::Curvature: return "curvature";
-        case Stage::EdgeSegmentation: return "edge segmentation";
-        case Stage::FeatureSegmentation: return "feature segmentation";
-        case Stage::Classification: return "classification";
-        case Stage::FeatureNormals: return "feature normals";
-        case Stage::SharpPoints: return "sharp points";
-        case Stage::Split: return "split";
+        case Stage::MeshBuilding:
+            return "mesh building";
+        case Stage::Curvature:
+            return "curvature";
+        case Stage::EdgeSegmentation:
+            return "edge segmentation";
+        case Stage::FeatureSegmentation:
+            return "feature segmentation";
+        case Stage::Classification:
+            return "classification";
+        case Stage::FeatureNormals:
+            return "feature normals";
+        case Stage::SharpPoints:
+            return "sharp points";
+        case Stage::Split:
+            return "split";
     }
     return "unknown";
 }
@@ -110,10 +118,9 @@ public:
         Mesh output;
         timed(Stage::Split, [&] {
             SplitReport split;
-            output = split_band_triangles(mesh_, connectivity, face_normals, normals,
-                                          vertex_normals, points, split, result_.source_face,
-                                          {options_.points.spike_angle_deg,
-                                           options_.check_clearance});
+            output = split_band_triangles(
+                mesh_, connectivity, face_normals, normals, vertex_normals, points, split,
+                result_.source_face, {options_.points.spike_angle_deg, options_.check_clearance});
             record(split, points);
         });
         return output;
@@ -163,9 +170,9 @@ private:
         report_.refused_by_quality = split.refused_by_quality;
         report_.refused_by_guard = split.refused_by_guard;
         report_.split_triangles = split.split_faces;
-        report_.corner_points_inserted = static_cast<std::size_t>(std::count_if(
-            points.corner_point.begin(), points.corner_point.end(),
-            [](Index id) { return id != kNoIndex; }));
+        report_.corner_points_inserted = static_cast<std::size_t>(
+            std::count_if(points.corner_point.begin(), points.corner_point.end(),
+                          [](Index id) { return id != kNoIndex; }));
         report_.edge_points_inserted = split.new_vertices - report_.corner_points_inserted;
     }
 

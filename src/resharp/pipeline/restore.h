@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "resharp/mesh/mesh.h"
-#include "resharp/restoration/band_classification.h"
 #include "resharp/pipeline/options.h"
 #include "resharp/pipeline/report.h"
+#include "resharp/restoration/band_classification.h"
 
 namespace resharp {
 

@@ -1,12 +1,11 @@
 #include "resharp/restoration/clearance.h"
 
-#include <algorithm>
-#include <cmath>
-#include <cstdint>
-
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 
 namespace resharp {
 namespace {
@@ -48,7 +47,8 @@ bool lies_in(const IdTriangle& plane, const Vec3& x, double tolerance) {
         const Vec3& a = plane.p[k];
         const Vec3 edge = plane.p[(k + 1) % 3] - a;
         const double inside = (x - a).dot(plane.n.cross(edge));  // |edge| times the distance
-        if (inside < 0.0 && inside * inside > tolerance * tolerance * edge.squaredNorm()) return false;
+        if (inside < 0.0 && inside * inside > tolerance * tolerance * edge.squaredNorm())
+            return false;
     }
     return true;
 }
@@ -273,7 +273,8 @@ void search_near(const Mesh& mesh, const Connectivity& connectivity, Index f, In
             if (marks.face[g] == i) continue;
             marks.face[g] = i;
             const bool is_touched = number[g] != kNoIndex;
-            if (!(is_touched ? faces[number[g]].box : box_of(mesh, g)).intersects(own_box)) continue;
+            if (!(is_touched ? faces[number[g]].box : box_of(mesh, g)).intersects(own_box))
+                continue;
             if (is_touched || !lies_beyond_cap(mesh, f, faces[i], g)) out.emplace_back(i, g);
             for (Index v : mesh.triangles[g]) {
                 if (marks.vertex[v] == i || !reach.contains(mesh.positions[v])) continue;
@@ -298,8 +299,8 @@ NearbyFaces::NearbyFaces(const Mesh& mesh, const Connectivity& connectivity,
         SearchMarks& mine = marks.local();
         const std::size_t end = std::min(touched.size(), (chunk + 1) * kChunk);
         for (std::size_t i = chunk * kChunk; i < end; ++i) {
-            search_near(mesh, connectivity, touched[i], static_cast<Index>(i), number, faces,
-                        mine, found[chunk]);
+            search_near(mesh, connectivity, touched[i], static_cast<Index>(i), number, faces, mine,
+                        found[chunk]);
         }
     });
     // Touched faces near each other are listed both ways, so that a face whose pieces change

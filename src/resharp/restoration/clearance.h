@@ -8,11 +8,10 @@
 /// far above rounding: two triangles closer than it count as meeting, so where floating point
 /// cannot tell, a point is refused rather than risked.
 
+#include <Eigen/Geometry>
 #include <array>
 #include <span>
 #include <vector>
-
-#include <Eigen/Geometry>
 
 #include "resharp/core/types.h"
 #include "resharp/mesh/connectivity.h"

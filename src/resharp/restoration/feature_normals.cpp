@@ -1,13 +1,13 @@
 #include "resharp/restoration/feature_normals.h"
 
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
 #include <span>
-
-#include <Eigen/Cholesky>
-#include <tbb/parallel_for.h>
 
 #include "resharp/core/errors.h"
 #include "resharp/mesh/geometry.h"
@@ -206,11 +206,11 @@ void refine_by_fit(const Mesh& mesh, const Connectivity& c, const std::vector<Ve
 }  // namespace
 
 FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivity,
-                                  const std::vector<Vec3>& face_normals,
-                                  const std::vector<Index>& face_patch,
-                                  const std::vector<Index>& vertex_patch,
-                                  const BandClassification& bands,
-                                  const FeatureNormalOptions& options) {
+                               const std::vector<Vec3>& face_normals,
+                               const std::vector<Index>& face_patch,
+                               const std::vector<Index>& vertex_patch,
+                               const BandClassification& bands,
+                               const FeatureNormalOptions& options) {
     validate(options);
     const double degree = std::numbers::pi / 180.0;
     const FitLimits fit{std::cos(options.max_fit_correction_deg * degree),
@@ -222,25 +222,25 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
     }
     FeatureNormals result{std::vector<Vec3>(mesh.vertex_count(), Vec3::Zero()),
                           std::vector<float>(mesh.vertex_count(), 0.0f)};
-    tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(mesh.vertex_count()), 4096),
-                      [&](const auto& range) {
-                          FitScratch scratch;
-                          for (Index v = range.begin(); v != range.end(); ++v) {
-                              if (!needed[v] || vertex_patch[v] == kNoIndex) continue;
-                              Vec3 n = own_patch_normal(mesh, connectivity, face_normals,
-                                                        face_patch, vertex_patch, v);
-                              if (n.isZero(0.0)) {
-                                  n = neighbours_patch_normal(mesh, connectivity, face_normals,
-                                                              face_patch, vertex_patch, v);
-                              }
-                              if (options.estimate == NormalEstimate::LinearFit && !n.isZero(0.0)) {
-                                  refine_by_fit(mesh, connectivity, face_normals, face_patch,
-                                                vertex_patch, v, fit, n,
-                                                result.fit_correction_deg[v], scratch);
-                              }
-                              result.normal[v] = n;
-                          }
-                      });
+    tbb::parallel_for(
+        tbb::blocked_range<Index>(0, static_cast<Index>(mesh.vertex_count()), 4096),
+        [&](const auto& range) {
+            FitScratch scratch;
+            for (Index v = range.begin(); v != range.end(); ++v) {
+                if (!needed[v] || vertex_patch[v] == kNoIndex) continue;
+                Vec3 n =
+                    own_patch_normal(mesh, connectivity, face_normals, face_patch, vertex_patch, v);
+                if (n.isZero(0.0)) {
+                    n = neighbours_patch_normal(mesh, connectivity, face_normals, face_patch,
+                                                vertex_patch, v);
+                }
+                if (options.estimate == NormalEstimate::LinearFit && !n.isZero(0.0)) {
+                    refine_by_fit(mesh, connectivity, face_normals, face_patch, vertex_patch, v,
+                                  fit, n, result.fit_correction_deg[v], scratch);
+                }
+                result.normal[v] = n;
+            }
+        });
     return result;
 }
 

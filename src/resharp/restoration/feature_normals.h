@@ -41,20 +41,20 @@ struct FeatureNormals {
     std::vector<float> fit_correction_deg;
 };
 
-/// Per vertex (#V): at each vertex of an edge or corner triangle, N = sum(theta_i N_i) / sum(theta_i) over
-/// the incident faces of the vertex's own feature patch (eq. 5.1), normalised; theta_i is the
-/// face's angle at the vertex. Faces whose three vertices all lie on that patch are preferred:
-/// a face that only leans into the patch from a band would tilt N towards the neighbouring
-/// feature. A vertex all of whose faces lie in bands takes the mean of its same-patch neighbours'
-/// normals. Zero at vertices off the bands, without a patch, or where nothing can tell. With
-/// NormalEstimate::LinearFit the eq. 5.1 normal is then refined by the fit where it is well
+/// Per vertex (#V): at each vertex of an edge or corner triangle, N = sum(theta_i N_i) /
+/// sum(theta_i) over the incident faces of the vertex's own feature patch (eq. 5.1), normalised;
+/// theta_i is the face's angle at the vertex. Faces whose three vertices all lie on that patch are
+/// preferred: a face that only leans into the patch from a band would tilt N towards the
+/// neighbouring feature. A vertex all of whose faces lie in bands takes the mean of its same-patch
+/// neighbours' normals. Zero at vertices off the bands, without a patch, or where nothing can tell.
+/// With NormalEstimate::LinearFit the eq. 5.1 normal is then refined by the fit where it is well
 /// posed.
 /// \throws InvalidInput if an angle option lies outside [0, 180] degrees.
 FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivity,
-                                  const std::vector<Vec3>& face_normals,
-                                  const std::vector<Index>& face_patch,
-                                  const std::vector<Index>& vertex_patch,
-                                  const BandClassification& bands,
-                                  const FeatureNormalOptions& options = {});
+                               const std::vector<Vec3>& face_normals,
+                               const std::vector<Index>& face_patch,
+                               const std::vector<Index>& vertex_patch,
+                               const BandClassification& bands,
+                               const FeatureNormalOptions& options = {});
 
 }  // namespace resharp

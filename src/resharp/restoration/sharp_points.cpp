@@ -35,10 +35,10 @@ bool passes_flip_test(const Vec3& a, const Vec3& n_a, const Vec3& b, const Vec3&
     const Vec3 cross = n_a.cross(n_b);
     const double sine = cross.norm();
     if (sine < kParallelSine) return false;
-    const Vec3 n2 = cross / sine;                      // eq. 5.5: N_2, the edge direction
-    const Vec3 d = (b - a) - (b - a).dot(n2) * n2;     // D: a-b seen in the section normal to N_2
-    const Vec3 n20 = n2.cross(n_a);                    // trace of plane a in that section
-    const Vec3 n21 = n2.cross(n_b);                    // trace of plane b
+    const Vec3 n2 = cross / sine;                   // eq. 5.5: N_2, the edge direction
+    const Vec3 d = (b - a) - (b - a).dot(n2) * n2;  // D: a-b seen in the section normal to N_2
+    const Vec3 n20 = n2.cross(n_a);                 // trace of plane a in that section
+    const Vec3 n21 = n2.cross(n_b);                 // trace of plane b
     return n20.cross(d).dot(n2) * n21.cross(d).dot(n2) < 0.0;  // eq. 5.4
 }
 
@@ -104,9 +104,8 @@ void place_corner_points(const Mesh& mesh, const Connectivity& c,
             ++out.missing_normal;
             continue;
         }
-        const std::optional<Vec3> m =
-            corner_point(mesh.positions[t[0]], n[0], mesh.positions[t[1]], n[1],
-                         mesh.positions[t[2]], n[2]);
+        const std::optional<Vec3> m = corner_point(mesh.positions[t[0]], n[0], mesh.positions[t[1]],
+                                                   n[1], mesh.positions[t[2]], n[2]);
         if (!m || is_spike(c, face_normals, n, f, spike_angle_deg)) {
             ++out.refused_by_spike_test;
             continue;

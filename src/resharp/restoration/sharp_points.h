@@ -30,7 +30,8 @@ struct SharpPoints {
     std::vector<Index> corner_point;
     std::size_t edge_points = 0;
     std::size_t corner_points = 0;
-    std::size_t refused_by_flip_test = 0;   ///< crossing edges failing eq. 5.4 (incl. parallel normals)
+    std::size_t refused_by_flip_test =
+        0;  ///< crossing edges failing eq. 5.4 (incl. parallel normals)
     std::size_t refused_by_spike_test = 0;  ///< corner triangles failing the spike test
     std::size_t missing_normal = 0;         ///< crossing edges or corners with an unknown normal
 };

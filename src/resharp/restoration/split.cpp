@@ -1,13 +1,13 @@
 #include "resharp/restoration/split.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <iterator>
 #include <numbers>
 #include <span>
-
-#include <tbb/parallel_for.h>
 
 #include "resharp/mesh/geometry.h"
 #include "resharp/restoration/clearance.h"
@@ -47,12 +47,12 @@ bool has_points(const SharpPoints& p, Index f) {
            p.edge_point[3 * f + 1] != kNoIndex || p.edge_point[3 * f + 2] != kNoIndex;
 }
 
-FacePolygon boundary_of(const Mesh& mesh, const SharpPoints& p, const SplitVertices& ids,
-                        Index f) {
+FacePolygon boundary_of(const Mesh& mesh, const SharpPoints& p, const SplitVertices& ids, Index f) {
     FacePolygon polygon;
     for (Index k = 0; k < 3; ++k) {
         polygon.push(mesh.triangles[f][k]);
-        if (p.edge_point[3 * f + k] != kNoIndex) polygon.push(ids.of_point(p.edge_point[3 * f + k]));
+        if (p.edge_point[3 * f + k] != kNoIndex)
+            polygon.push(ids.of_point(p.edge_point[3 * f + k]));
     }
     return polygon;
 }
@@ -62,7 +62,8 @@ FacePolygon boundary_of(const Mesh& mesh, const SharpPoints& p, const SplitVerti
 /// trigonometry.
 double shape_quality(const SplitVertices& ids, Index a, Index b, Index c) {
     const Vec3 &pa = ids.position(a), &pb = ids.position(b), &pc = ids.position(c);
-    const double edges = (pb - pa).squaredNorm() + (pc - pb).squaredNorm() + (pa - pc).squaredNorm();
+    const double edges =
+        (pb - pa).squaredNorm() + (pc - pb).squaredNorm() + (pa - pc).squaredNorm();
     if (edges == 0.0) return 0.0;
     return 2.0 * std::sqrt(3.0) * (pb - pa).cross(pc - pa).norm() / edges;
 }
@@ -107,9 +108,11 @@ enum class Fault {
 class PieceJudge {
 public:
     PieceJudge(const Mesh& mesh, const std::vector<Vec3>& face_normals,
-               const ReferenceNormals& reference, const SplitVertices& ids,
-               double spike_angle_deg)
-        : mesh_(mesh), face_normals_(face_normals), reference_(reference), ids_(ids),
+               const ReferenceNormals& reference, const SplitVertices& ids, double spike_angle_deg)
+        : mesh_(mesh),
+          face_normals_(face_normals),
+          reference_(reference),
+          ids_(ids),
           thin_cosine_(std::cos(spike_angle_deg * std::numbers::pi / 180.0)) {}
 
     const SplitVertices& ids() const { return ids_; }
@@ -123,7 +126,8 @@ public:
     ///   thin for the mesh) and does not clear each of them by twice its margin: there the
     ///   piece stands almost on edge to both surfaces, and an error in either normal flips it.
     Fault fault(Index f, Index a, Index b, Index c) const {
-        const Vec3 n = (ids_.position(b) - ids_.position(a)).cross(ids_.position(c) - ids_.position(a));
+        const Vec3 n =
+            (ids_.position(b) - ids_.position(a)).cross(ids_.position(c) - ids_.position(a));
         if (n.norm() <= kCollapsedAreaRatio * longest_edge_squared(f)) return Fault::Quality;
         const bool thin = spans_thin_material(a, b, c);
         const Vec3& face_normal = face_normals_[f];
@@ -138,7 +142,8 @@ public:
             if (thin && n.dot(r.normal) <= sin_deg(std::min(2.0 * r.margin_deg, 89.0)) * n.norm()) {
                 found = Fault::Guard;
             }
-            face_leans_past_surface = face_leans_past_surface || face_normal.dot(r.normal) <= min_cosine;
+            face_leans_past_surface =
+                face_leans_past_surface || face_normal.dot(r.normal) <= min_cosine;
         }
         if (!face_leans_past_surface && n.dot(face_normal) <= 0.0) return Fault::Guard;
         return found;
@@ -149,7 +154,8 @@ private:
         const Triangle& t = mesh_.triangles[f];
         double longest = 0.0;
         for (int k = 0; k < 3; ++k) {
-            longest = std::max(longest, (mesh_.positions[t[(k + 1) % 3]] - mesh_.positions[t[k]]).squaredNorm());
+            longest = std::max(
+                longest, (mesh_.positions[t[(k + 1) % 3]] - mesh_.positions[t[k]]).squaredNorm());
         }
         return longest;
     }
@@ -159,7 +165,8 @@ private:
         for (int i = 0; i < 3; ++i) {
             for (int j = i + 1; j < 3; ++j) {
                 if (!ids_.is_original(v[i]) || !ids_.is_original(v[j])) continue;
-                if (reference_.at(v[i]).normal.dot(reference_.at(v[j]).normal) < thin_cosine_) return true;
+                if (reference_.at(v[i]).normal.dot(reference_.at(v[j]).normal) < thin_cosine_)
+                    return true;
             }
         }
         return false;
@@ -246,10 +253,15 @@ public:
     Clearance(const Mesh& mesh, const Connectivity& connectivity,
               const std::vector<Vec3>& face_normals, const SharpPoints& p, const PieceJudge& judge,
               std::span<const Index> touched)
-        : mesh_(mesh), face_normals_(face_normals), p_(p), judge_(judge),
-          number_(numbers_of(mesh, touched)), pieces_(touched.size()),
+        : mesh_(mesh),
+          face_normals_(face_normals),
+          p_(p),
+          judge_(judge),
+          number_(numbers_of(mesh, touched)),
+          pieces_(touched.size()),
           nearby_(mesh, connectivity, touched, number_, describe(touched)) {
-        tbb::parallel_for(std::size_t{0}, touched.size(), [&](std::size_t i) { refresh(touched[i]); });
+        tbb::parallel_for(std::size_t{0}, touched.size(),
+                          [&](std::size_t i) { refresh(touched[i]); });
     }
 
     /// The faces whose boxes meet touched face f's.
@@ -325,7 +337,8 @@ private:
     IdTriangle triangle_of(const StoredPiece& piece) const {
         const SplitVertices& ids = judge_.ids();
         const Triangle& t = piece.id;
-        return IdTriangle::make(t, ids.position(t[0]), ids.position(t[1]), ids.position(t[2]), piece.n);
+        return IdTriangle::make(t, ids.position(t[0]), ids.position(t[1]), ids.position(t[2]),
+                                piece.n);
     }
     Box3 hull_box(Index f) const {
         Box3 box;
@@ -405,8 +418,7 @@ void clear_slot(const PointSlots& s, int i) {
 /// Tries `replacement` in slot i of face f; keeps it (on both faces of the edge) if the face
 /// then splits without fault.
 template <class IsSound>
-bool try_slot(Index f, const PointSlots& s, int i, Index replacement,
-              const IsSound& is_sound) {
+bool try_slot(Index f, const PointSlots& s, int i, Index replacement, const IsSound& is_sound) {
     const Index kept = *s.slot[i];
     *s.slot[i] = replacement;
     const bool sound = is_sound(f);
@@ -432,7 +444,8 @@ std::size_t repair_face(const Connectivity& c, SharpPoints& p, Index f, const Is
         if (*s.slot[i] != kNoIndex && try_slot(f, s, i, kNoIndex, is_sound)) return 1;
     }
     const Index corner = p.corner_point[f];
-    const bool has_snapped_edge = *s.slot[0] == corner || *s.slot[1] == corner || *s.slot[2] == corner;
+    const bool has_snapped_edge =
+        *s.slot[0] == corner || *s.slot[1] == corner || *s.slot[2] == corner;
     for (int i = 0; i < 3 && corner != kNoIndex && !has_snapped_edge; ++i) {
         if (*s.slot[i] != kNoIndex && try_slot(f, s, i, corner, is_sound)) return 1;
     }
@@ -497,9 +510,9 @@ void queue_faces_across(const Connectivity& c, Index f, Worklist& work) {
 /// worklist holds the faces to check: first all faces with points, then, after a repair, the
 /// faces across its edges, whose split changed too. Repairs only drop points or move an edge's
 /// point onto a corner point once, so it ends.
-void drop_points_of_faulty_pieces(const Mesh& mesh, const Connectivity& c,
-                                  const PieceJudge& judge, std::span<const Index> touched,
-                                  SharpPoints& p, Dropped& dropped) {
+void drop_points_of_faulty_pieces(const Mesh& mesh, const Connectivity& c, const PieceJudge& judge,
+                                  std::span<const Index> touched, SharpPoints& p,
+                                  Dropped& dropped) {
     auto fault_of = [&](Index f) {
         Fault worst = Fault::None;
         emit_pieces(mesh, p, judge.ids(), f, [&](Index a, Index b, Index cc) {
@@ -515,7 +528,8 @@ void drop_points_of_faulty_pieces(const Mesh& mesh, const Connectivity& c,
         if (!has_points(p, f)) continue;
         const Fault fault = fault_of(f);
         if (fault == Fault::None) continue;
-        (fault == Fault::Quality ? dropped.quality : dropped.guard) += repair_face(c, p, f, is_sound);
+        (fault == Fault::Quality ? dropped.quality : dropped.guard) +=
+            repair_face(c, p, f, is_sound);
         queue_faces_across(c, f, work);
     }
 }
@@ -532,7 +546,8 @@ void drop_points_of_meeting_pieces(const Mesh& mesh, const Connectivity& c,
     std::copy_if(first_touched.begin(), first_touched.end(), std::back_inserter(touched),
                  [&](Index f) { return has_points(p, f); });
     Clearance clearance(mesh, c, face_normals, p, judge, touched);
-    std::vector<std::uint8_t> verdict_is_current(mesh.face_count(), 0), first_clear(mesh.face_count(), 0);
+    std::vector<std::uint8_t> verdict_is_current(mesh.face_count(), 0),
+        first_clear(mesh.face_count(), 0);
     tbb::parallel_for(std::size_t{0}, touched.size(), [&](std::size_t i) {
         first_clear[touched[i]] = clearance.stored_pieces_are_clear(touched[i], true);
         verdict_is_current[touched[i]] = 1;
@@ -552,14 +567,16 @@ void drop_points_of_meeting_pieces(const Mesh& mesh, const Connectivity& c,
     while (!work.empty()) {
         const Index f = work.pop();
         if (!has_points(p, f)) continue;
-        const bool clear = verdict_is_current[f] ? first_clear[f] : clearance.stored_pieces_are_clear(f, false);
+        const bool clear =
+            verdict_is_current[f] ? first_clear[f] : clearance.stored_pieces_are_clear(f, false);
         verdict_is_current[f] = 0;
         if (clear) continue;
         dropped.guard += repair_face(c, p, f, is_sound);
         std::array<Index, 4> changed{f, kNoIndex, kNoIndex, kNoIndex};
         for (Index k = 0; k < 3; ++k) {
             const Index twin = c.twin[3 * f + k];
-            if (twin != kNoIndex && clearance.is_touched(face_of(twin))) changed[k + 1] = face_of(twin);
+            if (twin != kNoIndex && clearance.is_touched(face_of(twin)))
+                changed[k + 1] = face_of(twin);
         }
         for (Index g : changed) {
             if (g == kNoIndex) continue;
@@ -575,8 +592,10 @@ void drop_points_of_meeting_pieces(const Mesh& mesh, const Connectivity& c,
 /// Output index of each surviving point, in points order.
 std::vector<Index> number_surviving_points(const SharpPoints& p, Index first) {
     std::vector<std::uint8_t> used(p.points.size(), 0);
-    for (Index id : p.edge_point) if (id != kNoIndex) used[id] = 1;
-    for (Index id : p.corner_point) if (id != kNoIndex) used[id] = 1;
+    for (Index id : p.edge_point)
+        if (id != kNoIndex) used[id] = 1;
+    for (Index id : p.corner_point)
+        if (id != kNoIndex) used[id] = 1;
     std::vector<Index> number(p.points.size(), kNoIndex);
     for (std::size_t i = 0; i < used.size(); ++i) {
         if (used[i]) number[i] = first++;
@@ -614,7 +633,9 @@ Mesh split_band_triangles(const Mesh& mesh, const Connectivity& connectivity,
     }
     report.new_vertices = out.positions.size() - mesh.vertex_count();
 
-    auto output_id = [&](Index id) { return ids.is_original(id) ? id : number[id - original_count]; };
+    auto output_id = [&](Index id) {
+        return ids.is_original(id) ? id : number[id - original_count];
+    };
     out.triangles.reserve(mesh.face_count() + 4 * report.new_vertices);
     source_face.clear();
     source_face.reserve(out.triangles.capacity());

@@ -31,7 +31,7 @@ struct SplitReport {
     /// points dropped by the guard: a piece would turn against the face it replaces, stand
     /// almost on edge across thin material, or meet another triangle
     std::size_t refused_by_guard = 0;
-    std::size_t split_faces = 0;         ///< input faces replaced by pieces
+    std::size_t split_faces = 0;  ///< input faces replaced by pieces
     std::size_t new_vertices = 0;
     std::size_t output_faces = 0;
 };
@@ -41,11 +41,11 @@ struct SplitReport {
 /// points of place_sharp_points and the options. First drops, repeatedly, points of faces whose
 /// pieces would collapse, turn against the surface they lie on or the face they replace, or,
 /// with SplitOptions::check_clearance, meet another triangle of the output (the guard), so that
-/// no output triangle is flipped (and, with the check, no self-intersection is made); dropped points are removed from
-/// `points` (set to kNoIndex). Then builds the output: the input vertices first, unchanged and
-/// in order, then the surviving points in `points` order; each face in input order, either
-/// unchanged or replaced by its pieces. `source_face` receives, per output face, the input
-/// face it came from.
+/// no output triangle is flipped (and, with the check, no self-intersection is made); dropped
+/// points are removed from `points` (set to kNoIndex). Then builds the output: the input vertices
+/// first, unchanged and in order, then the surviving points in `points` order; each face in input
+/// order, either unchanged or replaced by its pieces. `source_face` receives, per output face, the
+/// input face it came from.
 Mesh split_band_triangles(const Mesh& mesh, const Connectivity& connectivity,
                           const std::vector<Vec3>& face_normals,
                           const FeatureNormals& feature_normals,

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <deque>
+#include <numbers>
 #include <string>
 
 #include "resharp/core/disjoint_sets.h"
@@ -46,13 +46,13 @@ std::array<Eigen::Vector2d, 2> initial_centres(std::vector<Eigen::Vector2d> poin
 
 /// Clusters (k1, k2); the cluster whose centre lies farther from zero curvature is "edge".
 std::vector<std::uint8_t> cluster_edge_vertices(const PrincipalCurvatures& k,
-                                                const EdgeSegmentationOptions& o,
-                                                int& iterations) {
+                                                const EdgeSegmentationOptions& o, int& iterations) {
     std::vector<Eigen::Vector2d> points(k.k1.size());
     for (std::size_t v = 0; v < points.size(); ++v) {
         const double a = std::abs(k.k1[v]), b = std::abs(k.k2[v]);
-        points[v] = o.feature == CurvatureFeature::Signed ? Eigen::Vector2d(k.k1[v], k.k2[v])
-                                                          : Eigen::Vector2d(std::min(a, b), std::max(a, b));
+        points[v] = o.feature == CurvatureFeature::Signed
+                        ? Eigen::Vector2d(k.k1[v], k.k2[v])
+                        : Eigen::Vector2d(std::min(a, b), std::max(a, b));
     }
     std::vector<std::uint8_t> is_edge(points.size(), 0);
     if (points.empty()) return is_edge;
@@ -110,8 +110,10 @@ bool is_edge_end(const Mesh& mesh, const Connectivity& c, const std::vector<std:
     bool second = false;
     for_each_ring_vertex(mesh, c, v, [&](Index j) {
         if (!is_edge[j]) return;
-        if (first == kNoIndex) first = j;
-        else if (j != first) second = true;
+        if (first == kNoIndex)
+            first = j;
+        else if (j != first)
+            second = true;
     });
     return !second;
 }

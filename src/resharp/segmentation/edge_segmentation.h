@@ -37,7 +37,7 @@ struct EdgeSegmentationOptions {
 };
 
 struct EdgeSegmentation {
-    std::vector<std::uint8_t> is_edge;  ///< per vertex (#V): 1 for edge vertices
+    std::vector<std::uint8_t> is_edge;        ///< per vertex (#V): 1 for edge vertices
     std::size_t clustered_edge_vertices = 0;  ///< edge vertices straight out of k-means
     std::size_t isolated_removed = 0;         ///< edge vertices with no edge neighbour
     std::size_t bridge_vertices_added = 0;    ///< non-edge vertices made edge to join pieces

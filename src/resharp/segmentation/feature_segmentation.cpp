@@ -157,7 +157,8 @@ std::vector<std::vector<Contact>> tiny_contacts(const Connectivity& c,
             const Index theirs = region[face_of(twin)];
             if (role[theirs] != PatchRole::Feature) continue;
             auto& list = contacts[mine];
-            auto it = std::find_if(list.begin(), list.end(), [&](auto& e) { return e.patch == theirs; });
+            auto it =
+                std::find_if(list.begin(), list.end(), [&](auto& e) { return e.patch == theirs; });
             if (it == list.end()) it = list.insert(list.end(), Contact{theirs});
             ++it->edges;
             it->cosine_sum += normals[f].dot(normals[face_of(twin)]);
@@ -173,8 +174,8 @@ Index absorbing_patch(const std::vector<Contact>& contacts, double min_mean_cosi
     std::size_t best_edges = 0;
     for (const Contact& contact : contacts) {
         const double mean = contact.cosine_sum / static_cast<double>(contact.edges);
-        const bool better = contact.edges > best_edges ||
-                            (contact.edges == best_edges && contact.patch < best);
+        const bool better =
+            contact.edges > best_edges || (contact.edges == best_edges && contact.patch < best);
         if (mean > min_mean_cosine && better) {
             best = contact.patch;
             best_edges = contact.edges;
@@ -299,9 +300,8 @@ std::size_t merge_patches(const Mesh& mesh, const Connectivity& c, const std::ve
     }
     std::sort(pairs.begin(), pairs.end());
     DisjointSets sets(patch_count);
-    const std::size_t merges =
-        unite_smooth_borders(pairs, -std::cos(merge_angle_deg * kDegree), keep_apart,
-                             patch_count, sets);
+    const std::size_t merges = unite_smooth_borders(pairs, -std::cos(merge_angle_deg * kDegree),
+                                                    keep_apart, patch_count, sets);
     for (Index& p : face_patch) {
         if (p != kNoIndex) p = sets.find(p);
     }
@@ -335,9 +335,12 @@ std::vector<Index> label_vertices(const Mesh& mesh, const Connectivity& c,
         for (Index f : c.faces_around(v)) {
             const Index p = face_patch[f];
             if (p == kNoIndex) continue;
-            auto it = std::find_if(counts.begin(), counts.end(), [&](auto& e) { return e.first == p; });
-            if (it == counts.end()) counts.emplace_back(p, 1);
-            else ++it->second;
+            auto it =
+                std::find_if(counts.begin(), counts.end(), [&](auto& e) { return e.first == p; });
+            if (it == counts.end())
+                counts.emplace_back(p, 1);
+            else
+                ++it->second;
         }
         int best = 0;
         for (const auto& [p, n] : counts) {
@@ -447,7 +450,8 @@ FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& conne
     const PatchCensus census =
         take_census(mesh, connectivity, region, s.grown_patches, is_edge_vertex);
     std::vector<PatchRole> role = assign_roles(census, options);
-    s.band_patches = static_cast<std::size_t>(std::count(role.begin(), role.end(), PatchRole::Band));
+    s.band_patches =
+        static_cast<std::size_t>(std::count(role.begin(), role.end(), PatchRole::Band));
     s.tiny_absorbed =
         absorb_tiny(connectivity, face_normals, options.merge_angle_deg, region, role);
 
@@ -455,8 +459,7 @@ FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& conne
         if (role[r] == PatchRole::Band) r = kNoIndex;
     }
     s.merges = merge_patches(mesh, connectivity, face_normals, options.merge_angle_deg,
-                             options.keep_sharp_borders_apart, region,
-                             s.grown_patches);
+                             options.keep_sharp_borders_apart, region, s.grown_patches);
     s.patch_count = compact_ids(region, s.grown_patches);
     s.face_patch = std::move(region);
     s.vertex_patch = refine_border_labels(mesh, connectivity, face_normals, s.face_patch,

@@ -47,11 +47,11 @@ struct FeatureSegmentation {
     /// Per vertex (#V): the feature patch with the most faces in the vertex's one-ring, or
     /// kNoIndex when no incident face belongs to a feature patch.
     std::vector<Index> vertex_patch;
-    std::size_t patch_count = 0;        ///< feature patches after absorbing and merging
-    std::size_t grown_patches = 0;      ///< patches straight out of region growing
-    std::size_t band_patches = 0;       ///< grown patches recognised as chamfer bands
-    std::size_t tiny_absorbed = 0;      ///< tiny patches absorbed by a neighbour
-    std::size_t merges = 0;             ///< greedy merges of over-segmented patches
+    std::size_t patch_count = 0;    ///< feature patches after absorbing and merging
+    std::size_t grown_patches = 0;  ///< patches straight out of region growing
+    std::size_t band_patches = 0;   ///< grown patches recognised as chamfer bands
+    std::size_t tiny_absorbed = 0;  ///< tiny patches absorbed by a neighbour
+    std::size_t merges = 0;         ///< greedy merges of over-segmented patches
 };
 
 /// Mean of the unit normals of v's ring faces in patch p (face_patch, #F), leaving out faces that

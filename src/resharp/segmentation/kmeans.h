@@ -1,11 +1,10 @@
 #pragma once
 /// Two-means clustering of 2-D points (paper eq. 3.1-3.2), used on (k1, k2) per vertex.
 
+#include <Eigen/Core>
 #include <array>
 #include <cstdint>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace resharp {
 

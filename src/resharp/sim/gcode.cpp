@@ -112,8 +112,9 @@ private:
         if (begin < text.size() && text[begin] == '+') ++begin;
         const char* first = text.data() + begin;
         const char* last = text.data() + text.size();
-        const bool starts_number = first < last && (std::isdigit(static_cast<unsigned char>(*first)) ||
-                                                    *first == '.' || *first == '-');
+        const bool starts_number =
+            first < last &&
+            (std::isdigit(static_cast<unsigned char>(*first)) || *first == '.' || *first == '-');
         double value = 0.0;
         const auto result = std::from_chars(first, last, value);
         if (!starts_number || result.ec != std::errc() || !std::isfinite(value)) {
@@ -140,9 +141,18 @@ private:
                     if (!selected_tool_) fail("M6 tool change with no tool selected by T");
                     loaded_tool_ = *selected_tool_;
                     break;
-                case 2: case 30: ends = true; break;
-                case 3: case 4: case 5: case 8: case 9: break;  // spindle and coolant
-                default: fail("unsupported M" + format_number(m));
+                case 2:
+                case 30:
+                    ends = true;
+                    break;
+                case 3:
+                case 4:
+                case 5:
+                case 8:
+                case 9:
+                    break;  // spindle and coolant
+                default:
+                    fail("unsupported M" + format_number(m));
             }
         }
         if (block.has('K')) fail("word K has no use for arcs in the XY plane (G17)");
@@ -154,18 +164,43 @@ private:
 
     void apply_g(double g) {
         switch (integer_code(g, 'G')) {
-            case 0: motion_ = MoveKind::Rapid; break;
-            case 1: motion_ = MoveKind::Line; break;
-            case 2: motion_ = MoveKind::ArcClockwise; break;
-            case 3: motion_ = MoveKind::ArcCounterClockwise; break;
-            case 17: break;
-            case 18: case 19: fail("only arcs in the XY plane (G17) are supported");
-            case 20: scale_ = kMillimetresPerInch; break;
-            case 21: scale_ = 1.0; break;
-            case 90: incremental_ = false; break;
-            case 91: incremental_ = true; break;
-            case 40: case 49: case 54: case 80: case 94: break;  // safe-start modes
-            default: fail("unsupported G" + format_number(g));
+            case 0:
+                motion_ = MoveKind::Rapid;
+                break;
+            case 1:
+                motion_ = MoveKind::Line;
+                break;
+            case 2:
+                motion_ = MoveKind::ArcClockwise;
+                break;
+            case 3:
+                motion_ = MoveKind::ArcCounterClockwise;
+                break;
+            case 17:
+                break;
+            case 18:
+            case 19:
+                fail("only arcs in the XY plane (G17) are supported");
+            case 20:
+                scale_ = kMillimetresPerInch;
+                break;
+            case 21:
+                scale_ = 1.0;
+                break;
+            case 90:
+                incremental_ = false;
+                break;
+            case 91:
+                incremental_ = true;
+                break;
+            case 40:
+            case 49:
+            case 54:
+            case 80:
+            case 94:
+                break;  // safe-start modes
+            default:
+                fail("unsupported G" + format_number(g));
         }
     }
 
@@ -200,8 +235,8 @@ private:
             if (block.has('I') || block.has('J')) fail("an arc takes either R or I/J, not both");
             m.center = center_from_radius(from, to, *block['R'] * scale_, clockwise);
         } else if (block.has('I') || block.has('J')) {
-            m.center = from + scale_ * Eigen::Vector2d(block['I'].value_or(0.0),
-                                                       block['J'].value_or(0.0));
+            m.center =
+                from + scale_ * Eigen::Vector2d(block['I'].value_or(0.0), block['J'].value_or(0.0));
         } else {
             fail("an arc needs its centre (I, J) or radius (R)");
         }

@@ -37,7 +37,9 @@ struct Move {
     int tool = 0;                      ///< number of the loaded tool, 0 when none is loaded
     std::uint64_t line = 0;            ///< 1-based source line
 
-    bool is_arc() const { return kind == MoveKind::ArcClockwise || kind == MoveKind::ArcCounterClockwise; }
+    bool is_arc() const {
+        return kind == MoveKind::ArcClockwise || kind == MoveKind::ArcCounterClockwise;
+    }
 };
 
 struct GcodeOptions {

@@ -6,10 +6,9 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
-
-#include <nlohmann/json.hpp>
 
 #include "resharp/core/errors.h"
 
@@ -38,10 +37,10 @@ public:
             bad("program", "must be a file name");
         }
         job.program = (std::filesystem::path(folder) / program.get<std::string>()).string();
-        job.start_position = root.contains("start")
-                                 ? point(root["start"], "start")
-                                 : Vec3(job.stock.center().x(), job.stock.center().y(),
-                                        job.stock.max().z() + 50.0);
+        job.start_position =
+            root.contains("start")
+                ? point(root["start"], "start")
+                : Vec3(job.stock.center().x(), job.stock.center().y(), job.stock.max().z() + 50.0);
         const json& tools = member(root, "", "tools");
         if (!tools.is_array() || tools.empty()) bad("tools", "must be a non-empty array");
         for (std::size_t i = 0; i < tools.size(); ++i) read_tool(tools[i], i, job);
@@ -110,12 +109,12 @@ private:
                                   ? number(entry["corner_radius"], where + ".corner_radius")
                                   : 0.0;
         try {
-            const Tool tool =
-                Tool::make(shape, positive(member(entry, where, "diameter"), where + ".diameter"),
-                           corner,
-                           positive(member(entry, where, "flute_length"), where + ".flute_length"));
+            const Tool tool = Tool::make(
+                shape, positive(member(entry, where, "diameter"), where + ".diameter"), corner,
+                positive(member(entry, where, "flute_length"), where + ".flute_length"));
             if (!job.tools.emplace(number_of_tool, tool).second) {
-                bad(where + ".number", "tool " + std::to_string(number_of_tool) + " is listed twice");
+                bad(where + ".number",
+                    "tool " + std::to_string(number_of_tool) + " is listed twice");
             }
         } catch (const InvalidInput& e) {
             if (std::string(e.what()).rfind(source_, 0) == 0) throw;
@@ -142,8 +141,9 @@ Job parse_job(const std::string& text, const std::string& source, const std::str
         const std::size_t byte = e.byte > 0 ? e.byte - 1 : 0;
         std::string reason = e.what();
         const auto detail = reason.find("parse error");
-        throw ParseError(source, FileLocation::line(line_of(text, byte)),
-                         "malformed JSON (" + reason.substr(detail == std::string::npos ? 0 : detail) + ")");
+        throw ParseError(
+            source, FileLocation::line(line_of(text, byte)),
+            "malformed JSON (" + reason.substr(detail == std::string::npos ? 0 : detail) + ")");
     }
     return JobReader(source).read(root, folder);
 }

@@ -8,7 +8,8 @@
 ///   "pitch":   0.5,                                        // grid pitch h, mm (optional)
 ///   "program": "mech.nc",                                  // relative to the job file
 ///   "start":   [60, 45, 90],                               // tip before the first move (optional,
-///                                                          //   default 50 mm above the stock centre)
+///                                                          //   default 50 mm above the stock
+///                                                          centre)
 ///   "tools": [
 ///     {"number": 1, "type": "flat", "diameter": 10, "flute_length": 30},
 ///     {"number": 2, "type": "ball", "diameter": 6, "flute_length": 20},
@@ -26,10 +27,10 @@
 namespace resharp::sim {
 
 struct Job {
-    Box3 stock;                   ///< the raw block, mm
-    std::map<int, Tool> tools;    ///< by tool number (T word)
-    double pitch = 0.5;           ///< grid pitch h, mm
-    std::string program;          ///< G-code path, already resolved against the job's folder
+    Box3 stock;                          ///< the raw block, mm
+    std::map<int, Tool> tools;           ///< by tool number (T word)
+    double pitch = 0.5;                  ///< grid pitch h, mm
+    std::string program;                 ///< G-code path, already resolved against the job's folder
     Vec3 start_position = Vec3::Zero();  ///< tool tip before the first move, mm
 };
 

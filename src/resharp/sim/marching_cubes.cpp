@@ -1,11 +1,11 @@
 #include "resharp/sim/marching_cubes.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <limits>
-
-#include <tbb/parallel_for.h>
 
 namespace resharp::sim {
 namespace {
@@ -224,9 +224,8 @@ private:
         const std::size_t crossings = 2 * intervals.size();
         if (crossings == 0) return Crossing{0.5 * (t0 + t1), Vec3::Zero(), -1};
         const bool has_before = e > 0, has_after = e < crossings;
-        const bool use_after =
-            !has_before ||
-            (has_after && crossing(intervals, e).t - t1 < t0 - crossing(intervals, e - 1).t);
+        const bool use_after = !has_before || (has_after && crossing(intervals, e).t - t1 <
+                                                                t0 - crossing(intervals, e - 1).t);
         Crossing c = crossing(intervals, use_after ? e : e - 1);
         c.t = std::clamp(c.t, t0, t1);
         return c;
@@ -361,10 +360,10 @@ private:
     const GridSpec& spec_;
     MeshingOptions options_;
     std::array<std::size_t, 3> strides_{};
-    std::vector<std::uint8_t> inside_;                // per node
-    std::array<std::vector<Index>, 3> ray_offsets_;   // per family: CSR over rays
-    std::array<std::vector<Index>, 3> ray_edges_;     // per family: edge index along the ray
-    std::array<Index, 3> family_base_{};              // first vertex of each family
+    std::vector<std::uint8_t> inside_;               // per node
+    std::array<std::vector<Index>, 3> ray_offsets_;  // per family: CSR over rays
+    std::array<std::vector<Index>, 3> ray_edges_;    // per family: edge index along the ray
+    std::array<Index, 3> family_base_{};             // first vertex of each family
     std::atomic<std::size_t> multiple_crossings_{0};
     std::atomic<std::size_t> clamped_vertices_{0};
     OracleMesh out_;

@@ -34,16 +34,16 @@ struct MeshingOptions {
 
 /// What the mesher met on the way.
 struct MeshingStats {
-    std::size_t ambiguous_faces = 0;    ///< cell faces with four crossings (counted per cell)
-    std::size_t multiple_crossings = 0; ///< crossed cell edges whose ray crosses them 3+ times
-    std::size_t clamped_vertices = 0;   ///< vertices taken from the nearest end off their edge
+    std::size_t ambiguous_faces = 0;     ///< cell faces with four crossings (counted per cell)
+    std::size_t multiple_crossings = 0;  ///< crossed cell edges whose ray crosses them 3+ times
+    std::size_t clamped_vertices = 0;    ///< vertices taken from the nearest end off their edge
 };
 
 /// A mesh with the exact data of every vertex.
 struct OracleMesh {
-    Mesh mesh;                                ///< outward-oriented, closed, manifold
-    std::vector<Vec3> normals;                ///< #V exact unit outward normals
-    std::vector<std::int32_t> surface_ids;    ///< #V ids of the surface each vertex lies on
+    Mesh mesh;                              ///< outward-oriented, closed, manifold
+    std::vector<Vec3> normals;              ///< #V exact unit outward normals
+    std::vector<std::int32_t> surface_ids;  ///< #V ids of the surface each vertex lies on
     MeshingStats stats;
 };
 

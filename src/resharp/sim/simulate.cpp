@@ -16,7 +16,8 @@ void add_helix_ramps(const Move& move, double tolerance, std::vector<ToolMotion>
     const double ratio = std::max(-1.0, 1.0 - tolerance / move.radius);
     const double piece_angle = std::min(2.0 * std::acos(ratio), std::numbers::pi / 2);
     const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(move.sweep) / piece_angle)));
-    const double a0 = std::atan2(move.start.y() - move.center.y(), move.start.x() - move.center.x());
+    const double a0 =
+        std::atan2(move.start.y() - move.center.y(), move.start.x() - move.center.x());
     Vec3 previous = move.start;
     for (int i = 1; i <= pieces; ++i) {
         const double f = static_cast<double>(i) / pieces;
@@ -36,7 +37,8 @@ std::vector<ToolMotion> motions_of(const Move& move, double helix_tolerance) {
     if (!move.is_arc()) {
         motions.push_back({.kind = ToolMotion::Kind::Line, .start = move.start, .end = move.end});
     } else if (move.start.z() == move.end.z()) {
-        const double a0 = std::atan2(move.start.y() - move.center.y(), move.start.x() - move.center.x());
+        const double a0 =
+            std::atan2(move.start.y() - move.center.y(), move.start.x() - move.center.x());
         motions.push_back({.kind = ToolMotion::Kind::Arc,
                            .start = move.start,
                            .end = move.end,

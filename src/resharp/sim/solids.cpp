@@ -21,8 +21,8 @@ Box3 polytope_bounds(const std::vector<HalfSpace>& faces) {
                 m << faces[i].normal.transpose(), faces[j].normal.transpose(),
                     faces[k].normal.transpose();
                 if (std::abs(m.determinant()) < 1e-12) continue;
-                const Vec3 x = m.partialPivLu().solve(
-                    Vec3(faces[i].offset, faces[j].offset, faces[k].offset));
+                const Vec3 x =
+                    m.partialPivLu().solve(Vec3(faces[i].offset, faces[j].offset, faces[k].offset));
                 const double scale = 1.0 + x.cwiseAbs().maxCoeff();
                 bool feasible = true;
                 for (const HalfSpace& f : faces) {
@@ -133,7 +133,8 @@ void ZCylinder::intersect(const Ray& ray, std::vector<Interval>& out) const {
     }
     const double z = ray.origin.z();
     if (z < p_.z_min || z > p_.z_max) return;
-    if ((z == p_.z_min && !boundary_is_inside(down)) || (z == p_.z_max && !boundary_is_inside(up))) {
+    if ((z == p_.z_min && !boundary_is_inside(down)) ||
+        (z == p_.z_max && !boundary_is_inside(up))) {
         return;
     }
     const int across = 1 - ray.axis;  // x-rays vary in x and sit at fixed y, and vice versa
@@ -154,9 +155,7 @@ Sphere::Sphere(const Vec3& center, double radius, std::int32_t surface)
     if (!(radius > 0.0)) throw InvalidInput("sphere radius must be positive");
 }
 
-Box3 Sphere::bounds() const {
-    return Box3(center_.array() - radius_, center_.array() + radius_);
-}
+Box3 Sphere::bounds() const { return Box3(center_.array() - radius_, center_.array() + radius_); }
 
 void Sphere::intersect(const Ray& ray, std::vector<Interval>& out) const {
     Vec3 offset = ray.origin - center_;

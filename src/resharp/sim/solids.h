@@ -45,11 +45,11 @@ class ZCylinder final : public Solid {
 public:
     struct Params {
         Eigen::Vector2d center{0.0, 0.0};  ///< axis position (x, y), mm
-        double radius = 1.0;                ///< mm, > 0
-        double z_min = 0.0, z_max = 1.0;    ///< bottom and top planes, mm, z_min < z_max
-        std::int32_t side_surface = 0;      ///< id of the curved face
-        std::int32_t bottom_surface = 1;    ///< id of the z = z_min disk
-        std::int32_t top_surface = 2;       ///< id of the z = z_max disk
+        double radius = 1.0;               ///< mm, > 0
+        double z_min = 0.0, z_max = 1.0;   ///< bottom and top planes, mm, z_min < z_max
+        std::int32_t side_surface = 0;     ///< id of the curved face
+        std::int32_t bottom_surface = 1;   ///< id of the z = z_min disk
+        std::int32_t top_surface = 2;      ///< id of the z = z_max disk
     };
     /// \throws InvalidInput if radius or height is not positive.
     explicit ZCylinder(const Params& params);

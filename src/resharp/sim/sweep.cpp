@@ -100,11 +100,12 @@ Range capsule_chord(const VecD<D>& o, int k, const VecD<D>& a, const VecD<D>& b,
 }
 
 template <int D>
-VecD<D> nearest_on_segment(const VecD<D>& p, const VecD<D>& a, const VecD<D>& b, double* s = nullptr) {
+VecD<D> nearest_on_segment(const VecD<D>& p, const VecD<D>& a, const VecD<D>& b,
+                           double* s = nullptr) {
     const VecD<D> d = b - a;
     const double length_squared = d.squaredNorm();
-    const double t = length_squared > 0.0 ? std::clamp((p - a).dot(d) / length_squared, 0.0, 1.0)
-                                          : 0.0;
+    const double t =
+        length_squared > 0.0 ? std::clamp((p - a).dot(d) / length_squared, 0.0, 1.0) : 0.0;
     if (s != nullptr) *s = t;
     return a + t * d;
 }
@@ -173,7 +174,8 @@ void arc_band_pieces(const Vec2& o, int k, const ArcShape& arc, double rho,
             wedge[0] = left_of(o, k, arc.center, u_from).meet(left_of(o, k, arc.center, -u_to));
         } else {
             // The complement of a convex wedge: the line minus where it crosses that wedge.
-            const Range gap = left_of(o, k, arc.center, u_to).meet(left_of(o, k, arc.center, -u_from));
+            const Range gap =
+                left_of(o, k, arc.center, u_to).meet(left_of(o, k, arc.center, -u_from));
             if (!gap.empty()) wedge[0] = {-kInfinity, gap.t0}, wedge[1] = {gap.t1, kInfinity};
         }
     }
@@ -217,11 +219,13 @@ Vec2 unit_or_x(const Vec2& v) {
 SweptVolume::SweptVolume(const Tool& tool, const ToolMotion& motion, std::size_t move,
                          const SweepOptions& options)
     : tool_(tool), motion_(motion), move_(move), options_(options) {
-    if (!(options.bullnose_step > 0.0)) throw InvalidInput("bull-nose sampling step must be positive");
+    if (!(options.bullnose_step > 0.0))
+        throw InvalidInput("bull-nose sampling step must be positive");
     const Vec3 delta = motion.end - motion.start;
     const double rim = tool.radius;
     if (motion.kind == ToolMotion::Kind::Arc) {
-        if (motion.start.z() != motion.end.z()) throw InvalidInput("an arc motion must be horizontal");
+        if (motion.start.z() != motion.end.z())
+            throw InvalidInput("an arc motion must be horizontal");
         if (!(motion.radius > 0.0)) throw InvalidInput("an arc motion needs a positive radius");
         method_ = Method::Horizontal;
         const ArcShape arc = arc_shape(motion);
@@ -232,9 +236,9 @@ SweptVolume::SweptVolume(const Tool& tool, const ToolMotion& motion, std::size_t
             const double angle = quarter * std::numbers::pi / 2;
             if (arc.covers(angle)) xy.extend(arc.at(angle));
         }
-        bounds_ = Box3(Vec3(xy.min().x() - rim, xy.min().y() - rim, motion.start.z()),
-                       Vec3(xy.max().x() + rim, xy.max().y() + rim,
-                            motion.start.z() + tool.flute_length));
+        bounds_ = Box3(
+            Vec3(xy.min().x() - rim, xy.min().y() - rim, motion.start.z()),
+            Vec3(xy.max().x() + rim, xy.max().y() + rim, motion.start.z() + tool.flute_length));
         return;
     }
     if (delta.z() == 0.0) {
@@ -295,7 +299,8 @@ void SweptVolume::intersect_vertical(const Ray& ray, std::vector<Interval>& out)
     const Vec3 delta = motion_.end - motion_.start;
     const Vec2 d = delta.head<2>();
     const Vec2 w = xy - motion_.start.head<2>();
-    const double qa = d.squaredNorm(), qb = w.dot(d), qc = w.squaredNorm() - tool_.radius * tool_.radius;
+    const double qa = d.squaredNorm(), qb = w.dot(d),
+                 qc = w.squaredNorm() - tool_.radius * tool_.radius;
     const double disc = qb * qb - qa * qc;
     if (!(disc > 0.0)) return;
     const double root = std::sqrt(disc);
@@ -309,7 +314,8 @@ void SweptVolume::intersect_vertical(const Ray& ray, std::vector<Interval>& out)
     const Vec2 g_top = unit_or_x(xy - (motion_.start.head<2>() + s_top * d));
     Crossing exit = top_plane_at;
     exit.t = motion_.start.z() + s_top * delta.z() + top_rise;
-    if (top_on_rim) exit = {exit.t, rim_normal(g_top, delta), tool_surface_id(move_, ToolPart::TopRim)};
+    if (top_on_rim)
+        exit = {exit.t, rim_normal(g_top, delta), tool_surface_id(move_, ToolPart::TopRim)};
 
     Crossing enter;
     if (method_ == Method::FlatRamp) {
@@ -350,8 +356,8 @@ void SweptVolume::intersect_horizontal(const Ray& ray, std::vector<Interval>& ou
         const ProfilePoint section = radius_at(tool_, height);
         if (!(section.value > 0.0)) return;
         if (motion_.kind == ToolMotion::Kind::Line) {
-            const Range r = capsule_chord<2>(o, k, motion_.start.head<2>(),
-                                             motion_.end.head<2>(), section.value);
+            const Range r = capsule_chord<2>(o, k, motion_.start.head<2>(), motion_.end.head<2>(),
+                                             section.value);
             if (!r.empty()) out.push_back(band_crossings(r, section));
             return;
         }
@@ -400,8 +406,9 @@ void SweptVolume::intersect_horizontal(const Ray& ray, std::vector<Interval>& ou
         const bool clipped = (s == 0.0 && s_a > 0.0) || (s == 1.0 && s_b < 1.0);
         if (!clipped) return Crossing{t, embed(g), tool_surface_id(move_, ToolPart::Side)};
         const bool at_flute_top = std::abs(s_here - s_at_flute) < std::abs(s_here - s_at_from);
-        return Crossing{t, rim_normal(g, delta),
-                        tool_surface_id(move_, at_flute_top ? ToolPart::TopRim : ToolPart::BottomRim)};
+        return Crossing{
+            t, rim_normal(g, delta),
+            tool_surface_id(move_, at_flute_top ? ToolPart::TopRim : ToolPart::BottomRim)};
     };
     if (method_ == Method::FlatRamp) {
         if (!band.empty()) out.push_back({band_end(band.t0), band_end(band.t1)});
@@ -437,10 +444,10 @@ void SweptVolume::intersect_static_copies(const Ray& ray, std::vector<Interval>&
             const Vec2 g = unit_or_x(xy - centre);
             if (r > tool_.radius || (r == tool_.radius && !boundary_is_inside(embed(g)))) continue;
             const ProfilePoint bottom = bottom_at(tool_, r);
-            pieces.push_back({crossing(Vec3(xy.x(), xy.y(), 0.0), centre, bottom,
-                                       tip.z() + bottom.value),
-                              {tip.z() + tool_.flute_length, Vec3::UnitZ(),
-                               tool_surface_id(move_, ToolPart::Top)}});
+            pieces.push_back(
+                {crossing(Vec3(xy.x(), xy.y(), 0.0), centre, bottom, tip.z() + bottom.value),
+                 {tip.z() + tool_.flute_length, Vec3::UnitZ(),
+                  tool_surface_id(move_, ToolPart::Top)}});
             continue;
         }
         const double height = ray.origin.z() - tip.z();

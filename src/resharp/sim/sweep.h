@@ -26,12 +26,12 @@ namespace resharp::sim {
 struct ToolMotion {
     enum class Kind { Line, Arc };
     Kind kind = Kind::Line;
-    Vec3 start = Vec3::Zero();  ///< tip position at the start, mm
-    Vec3 end = Vec3::Zero();    ///< tip position at the end, mm
+    Vec3 start = Vec3::Zero();         ///< tip position at the start, mm
+    Vec3 end = Vec3::Zero();           ///< tip position at the end, mm
     Eigen::Vector2d center{0.0, 0.0};  ///< Arc: centre (x, y), mm
-    double radius = 0.0;        ///< Arc: radius, mm
-    double start_angle = 0.0;   ///< Arc: angle of `start` about the centre, rad
-    double sweep = 0.0;         ///< Arc: signed angle swept, rad, positive counter-clockwise (G3)
+    double radius = 0.0;               ///< Arc: radius, mm
+    double start_angle = 0.0;          ///< Arc: angle of `start` about the centre, rad
+    double sweep = 0.0;  ///< Arc: signed angle swept, rad, positive counter-clockwise (G3)
 };
 
 struct SweepOptions {

@@ -16,12 +16,17 @@ Tool Tool::make(ToolShape shape, double diameter, double corner_radius, double f
     t.radius = diameter / 2;
     t.flute_length = flute_length;
     switch (shape) {
-        case ToolShape::FlatEnd: t.corner_radius = 0.0; break;
-        case ToolShape::BallEnd: t.corner_radius = t.radius; break;
+        case ToolShape::FlatEnd:
+            t.corner_radius = 0.0;
+            break;
+        case ToolShape::BallEnd:
+            t.corner_radius = t.radius;
+            break;
         case ToolShape::BullNose:
             if (!positive(corner_radius) || corner_radius >= t.radius) {
-                throw InvalidInput("bull-nose corner radius must lie strictly between 0 and "
-                                   "half the diameter");
+                throw InvalidInput(
+                    "bull-nose corner radius must lie strictly between 0 and "
+                    "half the diameter");
             }
             t.corner_radius = corner_radius;
             break;
@@ -51,9 +56,12 @@ ProfilePoint radius_at(const Tool& tool, double z) {
 
 const char* to_string(ToolShape shape) {
     switch (shape) {
-        case ToolShape::FlatEnd: return "flat";
-        case ToolShape::BallEnd: return "ball";
-        case ToolShape::BullNose: return "bullnose";
+        case ToolShape::FlatEnd:
+            return "flat";
+        case ToolShape::BallEnd:
+            return "ball";
+        case ToolShape::BullNose:
+            return "bullnose";
     }
     return "?";
 }

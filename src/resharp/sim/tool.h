@@ -46,7 +46,7 @@ struct Tool {
 
 /// A point of the tool profile: its height or radius, and the outward profile normal.
 struct ProfilePoint {
-    double value = 0.0;  ///< z' for bottom_at(), r for radius_at()
+    double value = 0.0;                      ///< z' for bottom_at(), r for radius_at()
     double normal_r = 0.0, normal_z = -1.0;  ///< unit outward normal in the (r, z') plane
     ToolPart part = ToolPart::Bottom;
 };

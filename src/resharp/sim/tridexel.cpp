@@ -1,11 +1,11 @@
 #include "resharp/sim/tridexel.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <mutex>
-
-#include <tbb/parallel_for.h>
 
 #include "resharp/core/errors.h"
 
@@ -52,9 +52,7 @@ void subtract_intervals(RayIntervals& solid, std::span<const Interval> removed,
                         std::vector<Interval>& scratch) {
     // The remaining material is bounded by the removed volume, whose outward normal points into
     // the material: reverse it.
-    const auto bounding = [](const Crossing& c) {
-        return Crossing{c.t, -c.normal, c.surface};
-    };
+    const auto bounding = [](const Crossing& c) { return Crossing{c.t, -c.normal, c.surface}; };
     scratch.clear();
     std::size_t first_removed = 0;
     bool changed = false;
@@ -199,8 +197,8 @@ private:
             const int b_end = std::min({r.b1, tile.b0 + kTileSide - 1, nb - 1});
             for (int c = std::max(r.c0, tile.c0); c <= c_end; ++c) {
                 for (int b = std::max(r.b0, tile.b0); b <= b_end; ++b) {
-                    const std::size_t index = static_cast<std::size_t>(b) +
-                                              static_cast<std::size_t>(nb) * c;
+                    const std::size_t index =
+                        static_cast<std::size_t>(b) + static_cast<std::size_t>(nb) * c;
                     RayIntervals& solid = rays[index];
                     // Most rays a volume's box reaches hold no material there (air above the
                     // stock, a pocket already cut): skip them before the exact intersection.
@@ -219,7 +217,7 @@ private:
     DexelGrid& grid_;
     std::span<const Solid* const> volumes_;
     std::vector<Tile> tiles_;
-    std::vector<RayRange> ranges_;          // per volume, per family
+    std::vector<RayRange> ranges_;           // per volume, per family
     std::vector<std::size_t> tile_offsets_;  // CSR over tiles_
     std::vector<std::size_t> tile_volumes_;
 };
@@ -238,8 +236,8 @@ DexelGrid sample_solid(const GridSpec& spec, const Solid& solid) {
         tbb::parallel_for(range.c0, range.c1 + 1, [&](int c) {
             std::vector<Interval> found;
             for (int b = range.b0; b <= range.b1; ++b) {
-                const std::size_t index = static_cast<std::size_t>(b) +
-                                          static_cast<std::size_t>(nb) * c;
+                const std::size_t index =
+                    static_cast<std::size_t>(b) + static_cast<std::size_t>(nb) * c;
                 found.clear();
                 solid.intersect(spec.ray(a, index), found);
                 grid.rays[a][index].assign(found.data(), found.data() + found.size());

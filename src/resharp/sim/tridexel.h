@@ -12,13 +12,12 @@
 /// plane) are decided by one symbolic perturbation shared by every routine here and by the mesher:
 /// boundary_is_inside().
 
+#include <Eigen/Geometry>
 #include <array>
 #include <cstdint>
 #include <functional>
 #include <span>
 #include <vector>
-
-#include <Eigen/Geometry>
 
 #include "resharp/core/types.h"
 #include "resharp/sim/small_vector.h"
@@ -89,8 +88,8 @@ public:
 
 /// Node positions: node (i, j, k) sits at origin + (i, j, k) * pitch.
 struct GridSpec {
-    Vec3 origin = Vec3::Zero();        ///< position of node (0, 0, 0), mm
-    double pitch = 0.5;                ///< node spacing h, mm
+    Vec3 origin = Vec3::Zero();          ///< position of node (0, 0, 0), mm
+    double pitch = 0.5;                  ///< node spacing h, mm
     std::array<int, 3> counts{0, 0, 0};  ///< nodes along x, y, z
 
     /// Coordinate of node i along `axis`; the one formula every caller uses, so node positions
