@@ -210,21 +210,27 @@ public:
         const StageTimer building;
         connectivity = build_connectivity(input_);
         report_.input = diagnose(input_, connectivity);
-        if (options_.repair.remove_duplicate_faces) {
+        if (options_.repair.remove_duplicate_faces && report_.input.duplicate_faces > 0) {
             duplicates = find_duplicate_faces(input_, connectivity);
         }
         report_.duplicate_faces_removed = duplicates.removed;
         report_.opposite_face_pairs = duplicates.opposite_pairs;
         const Mesh working = duplicates.removed > 0 ? keep_faces(input_, duplicates.kept) : Mesh{};
         const Mesh& mesh = duplicates.removed > 0 ? working : input_;
-        if (duplicates.removed > 0) connectivity = build_connectivity(mesh);
+        if (duplicates.removed > 0) {
+            connectivity = {};  // the input's goes first: one connectivity alive at a time
+            connectivity = build_connectivity(mesh);
+        }
         const auto building_time = building.elapsed();
 
-        const Detection detection = detect_bands(mesh, std::move(connectivity), options_);
+        Detection detection = detect_bands(mesh, std::move(connectivity), options_);
         add_times(detection.stage_time);
         report_.stage_time[static_cast<std::size_t>(Stage::MeshBuilding)] += building_time;
         record(detection);
         if (options_.keep_segmentation) keep(detection, duplicates);
+        // What the rest does not read goes before the rest allocates (peak memory).
+        detection.edges = {};
+        detection.features = {};
 
         BandRestoration restored = restore_bands(detection.surface(mesh), detection.bands,
                                                  detection.feature_normals, options_);
