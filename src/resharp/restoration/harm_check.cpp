@@ -25,24 +25,175 @@ constexpr double kTouchRatio = 1e-9;
 /// Cosine below -this is a turn of more than 90 degrees (about 90.0001): see turns_against().
 constexpr double kRightAngleMargin = 1e-6;
 
-/// Per input face (#F + 1): where its output faces start; input face f became output faces
-/// first[f] .. first[f + 1] - 1.
-std::vector<Index> output_ranges(const SplitMesh& output, std::size_t input_faces) {
-    std::vector<Index> first(input_faces + 1, 0);
-    for (Index source : output.source_face) ++first[source + 1];
-    for (std::size_t f = 1; f < first.size(); ++f) first[f] += first[f - 1];
-    return first;
-}
+/// A fan face must face its fan's axis by at least this cosine to count as seen from the front
+/// (about 89.9999 degrees): far above the rounding of a unit normal, so that the sign of its
+/// turn about the axis is certain (see is_simple_fan()).
+constexpr double kFrontCosine = 1e-6;
 
-/// Whether t holds an edge of s the other way round: two faces that only the fold check needs
-/// to compare, since faces sharing an edge meet beyond it only by folding onto each other.
-bool shares_opposite_edge(const Triangle& s, const Triangle& t) {
+/// A fan edge must stand off the counting line by at least this share of its length for its
+/// side of the line to be certain (see is_simple_fan()).
+constexpr double kOffLineRatio = 1e-9;
+
+/// Fans of more faces than this are left to the pairwise test (grid meshes have 4 to 12).
+constexpr std::size_t kMaxFan = 16;
+
+/// What two triangles share: how many vertices, one of them, and whether one holds an edge of
+/// the other the other way round (faces sharing an edge meet beyond it only by folding onto
+/// each other, which the fold check judges).
+struct Sharing {
+    int count = 0;
+    Index vertex = kNoIndex;
+    bool opposite_edge = false;
+};
+
+Sharing sharing_of(const Triangle& s, const Triangle& t) {
+    Sharing shared;
+    std::array<int, 3> in_t{-1, -1, -1};  // per vertex of s, its corner in t
     for (int k = 0; k < 3; ++k) {
         for (int m = 0; m < 3; ++m) {
-            if (s[k] == t[(m + 1) % 3] && s[(k + 1) % 3] == t[m]) return true;
+            if (s[k] != t[m]) continue;
+            in_t[k] = m;
+            shared.vertex = s[k];
+            ++shared.count;
         }
     }
-    return false;
+    for (int k = 0; k < 3 && shared.count >= 2; ++k) {
+        const int from = in_t[k], to = in_t[(k + 1) % 3];  // s's edge k runs s[k] -> s[k + 1]
+        shared.opposite_edge |= from >= 0 && to >= 0 && from == (to + 1) % 3;
+    }
+    return shared;
+}
+
+/// The three planes through a triangle's edges that hold its normal, facing out: a face wholly
+/// more than the tolerance beyond one of them lies more than the tolerance from the triangle.
+/// Zero for a degenerate triangle (it parts nothing).
+struct EdgePlanes {
+    /// Per edge: the outward normal (ccw about the face's normal), of the edge's length, so
+    /// that heights come out scaled by the length and no square root is taken.
+    std::array<Vec3, 3> out{Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+    std::array<double, 3> offset{};          ///< out . (a point of the edge)
+    std::array<double, 3> length_squared{};  ///< of out
+
+    EdgePlanes() = default;
+    explicit EdgePlanes(const IdTriangle& t) {
+        for (int k = 0; k < 3; ++k) {
+            out[k] = (t.p[(k + 1) % 3] - t.p[k]).cross(t.n);
+            offset[k] = out[k].dot(t.p[k]);
+            length_squared[k] = out[k].squaredNorm();
+        }
+    }
+
+    /// Whether every vertex of t lies more than `tolerance` beyond one of the planes.
+    bool part(const IdTriangle& t, double tolerance) const {
+        for (int k = 0; k < 3; ++k) {
+            const double limit = tolerance * tolerance * length_squared[k];
+            auto beyond = [&](const Vec3& x) {
+                const double height = out[k].dot(x) - offset[k];
+                return height > 0.0 && height * height > limit;
+            };
+            if (length_squared[k] > 0.0 && beyond(t.p[0]) && beyond(t.p[1]) && beyond(t.p[2])) {
+                return true;
+            }
+        }
+        return false;
+    }
+};
+
+/// A triangle the crossing test holds pieces against, with its edge planes: given, or made
+/// the first time a test needs them.
+class Opponent {
+public:
+    Opponent(const IdTriangle& triangle, const EdgePlanes* planes)
+        : triangle_(triangle), planes_(planes) {}
+    const IdTriangle& triangle() const { return triangle_; }
+    const EdgePlanes& planes() const {
+        if (planes_ == nullptr) planes_ = &made_.emplace(triangle_);
+        return *planes_;
+    }
+
+private:
+    const IdTriangle& triangle_;
+    mutable const EdgePlanes* planes_;
+    mutable std::optional<EdgePlanes> made_;
+};
+
+/// One face around a vertex (the apex): the vertices after and before the apex in the face's
+/// counter-clockwise order, and its unit normal.
+struct Wedge {
+    Index next = kNoIndex, prev = kNoIndex;
+    const Vec3* normal = nullptr;
+};
+
+/// The faces around a vertex, at most kMaxFan; `overflow` when there were more.
+struct Fan {
+    std::array<Wedge, kMaxFan> wedges;
+    std::size_t size = 0;
+    bool overflow = false;
+
+    void add(const Triangle& t, Index apex, const Vec3& normal) {
+        if (size == kMaxFan) {
+            overflow = true;
+            return;
+        }
+        const int k = t[0] == apex ? 0 : t[1] == apex ? 1 : 2;
+        wedges[size++] = {t[(k + 1) % 3], t[(k + 2) % 3], &normal};
+    }
+};
+
+/// Whether the faces around `apex` form one simple fan: a closed disc that, seen along the sum
+/// of their normals (the axis), turns once around the apex with every face turning forwards.
+/// Then the faces, seen along the axis, lie in angular sectors around the apex that overlap
+/// nowhere, so two of them that share only the apex meet nowhere else.
+///
+/// Why the checks prove it. Every face faces the axis (cosine above kFrontCosine), so seen
+/// along it each face turns forwards (counter-clockwise) from its `next` side to its `prev`
+/// side, by less than half a turn. Every `prev` is exactly one face's `next`, and no face
+/// follows two, so following them is a permutation: the faces chain into closed cycles, each
+/// turning a whole number of times (at least once) around the apex. Counting
+/// the faces that cross one line from the apex (from its right side to its left) counts those
+/// turns; one crossing leaves one cycle turning once. The sides are
+/// computed once per edge, so the count is consistent, and edges nearer the line than
+/// kOffLineRatio of their length are refused, so rounding cannot misplace one.
+bool is_simple_fan(const std::vector<Vec3>& x, Index apex, const Fan& fan) {
+    if (fan.overflow || fan.size < 3) return false;
+    const std::span<const Wedge> wedges(fan.wedges.data(), fan.size);
+    Vec3 axis = Vec3::Zero();
+    for (const Wedge& w : wedges) axis += *w.normal;
+    const double length = axis.norm();
+    if (!(length > 0.0)) return false;
+    axis /= length;
+    for (const Wedge& w : wedges) {
+        if (!(w.normal->dot(axis) > kFrontCosine)) return false;
+    }
+    // A direction across the counting line, perpendicular to the axis. Made from a direction
+    // of no symmetry of the grid, not from a coordinate axis: grid meshes have many edges along
+    // the axes, which would lie on the line.
+    const Vec3 generic_a(0.267, 0.534, 0.802), generic_b(0.802, -0.267, 0.534);
+    const Vec3& off =
+        std::abs(axis.dot(generic_a)) < std::abs(axis.dot(generic_b)) ? generic_a : generic_b;
+    const Vec3 across = axis.cross(off).normalized();
+    std::array<bool, kMaxFan> left{};  // per wedge: its `next` edge lies left of the line
+    for (std::size_t i = 0; i < wedges.size(); ++i) {
+        const Vec3 edge = x[wedges[i].next] - x[apex];
+        const double side = edge.dot(across);
+        if (side * side <= kOffLineRatio * kOffLineRatio * edge.squaredNorm()) return false;
+        left[i] = side > 0.0;
+    }
+    int crossings = 0;
+    std::array<bool, kMaxFan> followed{};  // per wedge: it is some wedge's follower
+    for (std::size_t i = 0; i < wedges.size(); ++i) {
+        int followers = 0;  // wedges whose `next` edge is this one's `prev` edge
+        std::size_t follower = 0;
+        for (std::size_t j = 0; j < wedges.size(); ++j) {
+            if (wedges[j].next != wedges[i].prev) continue;
+            ++followers;
+            follower = j;
+        }
+        if (followers != 1 || followed[follower]) return false;
+        followed[follower] = true;
+        crossings += !left[i] && left[follower];
+    }
+    return crossings == 1;
 }
 
 /// What the checks found on one split face's pieces.
@@ -57,13 +208,58 @@ struct Ball {
     double radius;
 };
 
-/// One thread's scratch: the last split face that met each input face, a list of faces and
-/// their balls.
+/// One thread's scratch: the last split face that reached each input vertex and face, the
+/// faces within two rings and their balls.
 struct Scratch {
-    std::vector<Index> mark;
-    std::vector<Index> faces;
+    std::vector<Index> vertex_mark, face_mark;
+    std::vector<Index> vertices, faces;
     std::vector<Ball> balls;
-    explicit Scratch(std::size_t face_count) : mark(face_count, kNoIndex) {}
+    Scratch(std::size_t vertex_count, std::size_t face_count)
+        : vertex_mark(vertex_count, kNoIndex), face_mark(face_count, kNoIndex) {}
+};
+
+/// The split faces of an output mesh, numbered in input order, and their pieces.
+class SplitFaces {
+public:
+    /// Takes the split (source faces ascending) and the input's face count.
+    SplitFaces(const SplitMesh& output, std::size_t input_faces) : number_(input_faces, kNoIndex) {
+        const auto& source = output.source_face;
+        face_.reserve(output.split_faces);
+        first_output_.reserve(output.split_faces);
+        first_piece_.reserve(output.split_faces + 1);
+        // A split face's pieces are the runs of one source face; a run starts where the next
+        // output face has the same source.
+        for (Index o = 0; o + 1 < source.size(); ++o) {
+            if (source[o + 1] != source[o]) continue;
+            Index end = o + 2;
+            while (end < source.size() && source[end] == source[o]) ++end;
+            number_[source[o]] = static_cast<Index>(face_.size());
+            face_.push_back(source[o]);
+            first_output_.push_back(o);
+            first_piece_.push_back(piece_count_);
+            piece_count_ += end - o;
+            o = end - 1;
+        }
+        first_piece_.push_back(piece_count_);
+    }
+
+    std::size_t size() const { return face_.size(); }
+    std::size_t piece_count() const { return piece_count_; }
+    Index face(Index i) const { return face_[i]; }
+    /// The number of input face f among the split faces, or kNoIndex if f was left whole.
+    Index number(Index f) const { return number_[f]; }
+    /// The pieces of split face i: numbers first_piece(i) .. first_piece(i + 1) - 1, output
+    /// faces from first_output(i) on.
+    Index first_piece(Index i) const { return first_piece_[i]; }
+    Index first_output(Index i) const { return first_output_[i]; }
+    Index piece_count(Index i) const { return first_piece_[i + 1] - first_piece_[i]; }
+
+private:
+    std::vector<Index> number_;        ///< per input face (#F)
+    std::vector<Index> face_;          ///< per split face (#S): its input face, ascending
+    std::vector<Index> first_output_;  ///< per split face (#S)
+    std::vector<Index> first_piece_;   ///< per split face (#S + 1)
+    Index piece_count_ = 0;
 };
 
 class HarmChecker {
@@ -72,91 +268,157 @@ public:
         : input_(input),
           output_(output),
           min_fold_cosine_(std::cos(options.fold_angle_deg * std::numbers::pi / 180.0)),
-          first_(output_ranges(output, input.mesh.face_count())),
-          split_(split_faces()),
-          number_(numbers_of_split_faces()),
-          blamed_(input.mesh.face_count(), 0),
           check_crossings_(options.check_crossings),
-          split_boxes_(check_crossings_ ? split_boxes() : std::vector<Box3>{}) {}
+          split_(output, input.mesh.face_count()),
+          pieces_(split_.piece_count()),
+          piece_planes_(split_.piece_count()),
+          split_boxes_(split_.size()),
+          blamed_(split_.size(), 0) {
+        describe_pieces();
+        if (check_crossings_) find_simple_fans();
+    }
 
     HarmReport run() {
         std::vector<FaceVerdict> verdicts(split_.size());
-        tbb::enumerable_thread_specific<Scratch> scratch(input_.mesh.face_count());
+        tbb::enumerable_thread_specific<Scratch> scratch(input_.mesh.vertex_count(),
+                                                         input_.mesh.face_count());
         tbb::parallel_for(std::size_t{0}, split_.size(), [&](std::size_t i) {
             verdicts[i] = judge(static_cast<Index>(i), scratch.local());
         });
         HarmReport report;
-        for (std::size_t i = 0; i < split_.size(); ++i) {
+        for (Index i = 0; i < split_.size(); ++i) {
             report.turned += verdicts[i].turned;
             report.folded += verdicts[i].folded;
             report.crossing += verdicts[i].crossing;
-            if (verdicts[i].is_harmful()) blamed_[split_[i]] = 1;
-        }
-        for (Index f = 0; f < blamed_.size(); ++f) {
-            if (blamed_[f]) report.harmful_faces.push_back(f);
+            if (verdicts[i].is_harmful() || blamed_[i])
+                report.harmful_faces.push_back(split_.face(i));
         }
         return report;
     }
 
 private:
-    std::vector<Index> split_faces() const {
-        std::vector<Index> faces;
-        for (Index f = 0; f + 1 < first_.size(); ++f) {
-            if (first_[f + 1] - first_[f] > 1) faces.push_back(f);
-        }
-        return faces;
+    /// Every piece as a triangle with its normal and box, and every split face's box.
+    void describe_pieces() {
+        const auto& x = output_.mesh.positions;
+        tbb::parallel_for(Index{0}, static_cast<Index>(split_.size()), [&](Index i) {
+            Box3 box;
+            for (Index k = 0; k < split_.piece_count(i); ++k) {
+                const Triangle& t = output_.mesh.triangles[split_.first_output(i) + k];
+                IdTriangle& piece = pieces_[split_.first_piece(i) + k];
+                piece = IdTriangle::make(t, x[t[0]], x[t[1]], x[t[2]]);
+                piece_planes_[split_.first_piece(i) + k] = EdgePlanes(piece);
+                box.extend(piece.box);
+            }
+            split_boxes_[i] = box;
+        });
     }
-    std::vector<Index> numbers_of_split_faces() const {
-        std::vector<Index> number(input_.mesh.face_count(), kNoIndex);
-        for (std::size_t i = 0; i < split_.size(); ++i) number[split_[i]] = static_cast<Index>(i);
-        return number;
-    }
-    bool is_split(Index f) const { return number_[f] != kNoIndex; }
 
-    Vec3 output_normal(Index o) const {
-        const Triangle& t = output_.mesh.triangles[o];
-        const auto& x = output_.mesh.positions;
-        return triangle_normal(x[t[0]], x[t[1]], x[t[2]]);
+    /// Marks the vertices of split faces around which the output is a simple fan (see
+    /// is_simple_fan()): the input vertices of split faces, and every new vertex.
+    void find_simple_fans() {
+        const Index input_vertices = static_cast<Index>(input_.mesh.vertex_count());
+        simple_fan_.assign(output_.mesh.vertex_count(), 0);
+        std::vector<std::uint8_t> wanted(input_vertices, 0);
+        for (Index i = 0; i < split_.size(); ++i) {
+            for (Index v : input_.mesh.triangles[split_.face(i)]) wanted[v] = 1;
+        }
+        tbb::parallel_for(Index{0}, input_vertices, [&](Index v) {
+            if (wanted[v])
+                simple_fan_[v] = is_simple_fan(output_.mesh.positions, v, fan_of_input(v));
+        });
+        const PiecesAround around = pieces_around_new_vertices();
+        tbb::parallel_for(Index{0}, static_cast<Index>(around.first.size() - 1), [&](Index i) {
+            const Index v = input_vertices + i;
+            Fan fan;
+            for (Index k = around.first[i]; k < around.first[i + 1]; ++k) {
+                const IdTriangle& piece = pieces_[around.pieces[k]];
+                fan.add(piece.id, v, piece.n);
+            }
+            simple_fan_[v] = is_simple_fan(output_.mesh.positions, v, fan);
+        });
     }
-    IdTriangle output_triangle(Index o) const {
-        const Triangle& t = output_.mesh.triangles[o];
-        const auto& x = output_.mesh.positions;
-        return IdTriangle::make(t, x[t[0]], x[t[1]], x[t[2]]);
+
+    /// The output faces around input vertex v: its input faces left whole, and the pieces of
+    /// the split ones that hold v.
+    Fan fan_of_input(Index v) const {
+        Fan fan;
+        for (Index g : input_.connectivity.faces_around(v)) {
+            const Index j = split_.number(g);
+            if (j == kNoIndex) {
+                fan.add(input_.mesh.triangles[g], v, input_.normals.face[g]);
+                continue;
+            }
+            for (Index c = split_.first_piece(j); c < split_.first_piece(j + 1); ++c) {
+                const Triangle& t = pieces_[c].id;
+                if (t[0] == v || t[1] == v || t[2] == v) fan.add(t, v, pieces_[c].n);
+            }
+        }
+        return fan;
+    }
+
+    /// Per new vertex (output vertex #V in + i): the pieces that hold it, pieces[first[i]] ..
+    /// pieces[first[i + 1] - 1] (CSR, like Connectivity's rings).
+    struct PiecesAround {
+        std::vector<Index> first, pieces;
+    };
+    PiecesAround pieces_around_new_vertices() const {
+        const Index input_vertices = static_cast<Index>(input_.mesh.vertex_count());
+        PiecesAround around;
+        around.first.assign(output_.mesh.vertex_count() - input_vertices + 1, 0);
+        for (const IdTriangle& piece : pieces_) {
+            for (Index v : piece.id) {
+                if (v >= input_vertices) ++around.first[v - input_vertices + 1];
+            }
+        }
+        for (std::size_t i = 1; i < around.first.size(); ++i)
+            around.first[i] += around.first[i - 1];
+        around.pieces.resize(around.first.back());
+        std::vector<Index> fill(around.first.begin(), around.first.end() - 1);
+        for (Index c = 0; c < pieces_.size(); ++c) {
+            for (Index v : pieces_[c].id) {
+                if (v >= input_vertices) around.pieces[fill[v - input_vertices]++] = c;
+            }
+        }
+        return around;
     }
 
     /// The three checks on the pieces of split face number i.
     FaceVerdict judge(Index i, Scratch& scratch) const {
-        const Index f = split_[i];
+        const Index f = split_.face(i);
         gather_two_rings(f, i, scratch);
+        const double widest = widest_turn(f, scratch.faces);
         FaceVerdict verdict;
-        for (Index o = first_[f]; o < first_[f + 1]; ++o) {
-            const Vec3 n = output_normal(o);
-            verdict.turned += is_turned(o, n, scratch);
-            verdict.folded += is_folded(f, o, n);
+        for (Index c = split_.first_piece(i); c < split_.first_piece(i + 1); ++c) {
+            verdict.turned += is_turned(f, pieces_[c], widest, scratch);
+            verdict.folded += is_folded(i, c);
         }
-        if (check_crossings_) verdict.crossing += count_crossing_pieces(f, scratch.faces);
+        if (check_crossings_) verdict.crossing += count_crossing_pieces(i, scratch.faces);
         return verdict;
     }
 
-    /// Lists in scratch.faces the input faces within two rings of f: the faces sharing a vertex
-    /// with a face that shares a vertex with f.
+    /// Lists in scratch.faces the input faces within two rings of f: the faces around the
+    /// vertices of the faces around f's vertices. Gathering those vertices first visits each
+    /// of the ~12 ring vertices' faces once, not each first-ring face's three rings.
     void gather_two_rings(Index f, Index stamp, Scratch& scratch) const {
+        scratch.vertices.clear();
         scratch.faces.clear();
-        auto add = [&](Index g) {
-            if (scratch.mark[g] == stamp) return;
-            scratch.mark[g] = stamp;
-            scratch.faces.push_back(g);
-        };
+        scratch.balls.clear();
         for (Index v : input_.mesh.triangles[f]) {
-            for (Index g : input_.connectivity.faces_around(v)) add(g);
-        }
-        const std::size_t first_ring = scratch.faces.size();
-        for (std::size_t j = 0; j < first_ring; ++j) {
-            for (Index v : input_.mesh.triangles[scratch.faces[j]]) {
-                for (Index g : input_.connectivity.faces_around(v)) add(g);
+            for (Index g : input_.connectivity.faces_around(v)) {
+                for (Index u : input_.mesh.triangles[g]) {
+                    if (scratch.vertex_mark[u] == stamp) continue;
+                    scratch.vertex_mark[u] = stamp;
+                    scratch.vertices.push_back(u);
+                }
             }
         }
-        scratch.balls.clear();
+        for (Index u : scratch.vertices) {
+            for (Index g : input_.connectivity.faces_around(u)) {
+                if (scratch.face_mark[g] == stamp) continue;
+                scratch.face_mark[g] = stamp;
+                scratch.faces.push_back(g);
+            }
+        }
     }
 
     /// The balls of scratch.faces, made the first time a piece of the face needs them.
@@ -175,26 +437,50 @@ private:
         return {centre, radius};
     }
 
-    /// (a) Whether piece o, of unit normal n (zero: no area), turns more than 90 degrees
-    /// against all the input faces nearest one of its query points (its vertices and centroid;
-    /// ties go to the piece). Only faces it turns against can be the reason, so where it turns
-    /// against none of the candidates there is nothing to measure.
-    bool is_turned(Index o, const Vec3& n, Scratch& candidates) const {
+    /// The cosine of the widest angle between f's normal and a candidate's: every candidate's
+    /// normal lies in the cone of that angle around f's.
+    double widest_turn(Index f, const std::vector<Index>& candidates) const {
+        const Vec3& n = input_.normals.face[f];
+        double widest = 1.0;
+        for (Index g : candidates) widest = std::min(widest, n.dot(input_.normals.face[g]));
+        return widest;
+    }
+
+    /// Whether unit normal n, at an angle of cosine `cosine` from f's normal, turns against
+    /// none of the candidates, whose normals lie within an angle of cosine `widest` from it:
+    /// the angle between n and any of them is at most the sum of the two (the triangle
+    /// inequality on the sphere), whose cosine is cosine * widest - sines. The slack covers
+    /// the rounding of unit normals.
+    static bool turns_against_none(double cosine, double widest) {
+        if (!(cosine > 0.0 && widest > 0.0)) return false;
+        const double sines = std::sqrt(std::max(0.0, 1.0 - cosine * cosine)) *
+                             std::sqrt(std::max(0.0, 1.0 - widest * widest));
+        return cosine * widest - sines > -kRightAngleMargin + 1e-12;
+    }
+
+    /// (a) Whether a piece of split face f turns more than 90 degrees against all the input
+    /// faces nearest one of its query points (its vertices and centroid; ties go to the piece),
+    /// or has no area. Only faces it turns against can be the reason, so where it turns
+    /// against none of the candidates (first bounded by `widest`, see widest_turn()) there is
+    /// nothing to measure.
+    bool is_turned(Index f, const IdTriangle& piece, double widest, Scratch& candidates) const {
+        const Vec3& n = piece.n;
         if (n.isZero(0.0)) return true;
+        if (turns_against_none(n.dot(input_.normals.face[f]), widest)) return false;
         const bool turns_against_some =
             std::any_of(candidates.faces.begin(), candidates.faces.end(),
                         [&](Index g) { return turns_against(n, g); });
         if (!turns_against_some) return false;
         ensure_balls(candidates);
-        const Triangle& t = output_.mesh.triangles[o];
+        const Triangle& t = piece.id;
         const auto& x = output_.mesh.positions;
         for (Index v : t) {
             if (v < input_.mesh.vertex_count() ? turned_at_input_vertex(v, n)
-                                               : turned_at_point(x[v], n, candidates)) {
+                                               : turned_at_point(x[v], n, f, candidates)) {
                 return true;
             }
         }
-        return turned_at_point((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0, n, candidates);
+        return turned_at_point((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0, n, f, candidates);
     }
 
     /// Whether unit normal n turns more than 90 degrees against input face g. The margin,
@@ -210,27 +496,38 @@ private:
         return std::all_of(ring.begin(), ring.end(), [&](Index g) { return turns_against(n, g); });
     }
 
-    /// Whether the nearest face to q that n turns against is nearer than every other candidate.
-    /// Faces whose ball shows they cannot change that answer are not measured: a face turned
-    /// against n matters only if it may come nearer than both nearest so far, another only if
-    /// it may come nearer than the nearest so far of its kind and of the turned faces.
-    bool turned_at_point(const Vec3& q, const Vec3& n, const Scratch& candidates) const {
-        double nearest_against = std::numeric_limits<double>::infinity();
-        double nearest_other = std::numeric_limits<double>::infinity();
-        for (std::size_t j = 0; j < candidates.faces.size() && nearest_other > 0.0; ++j) {
-            const Ball& ball = candidates.balls[j];
-            const double reach = std::max(0.0, (q - ball.centre).norm() - ball.radius);
-            const double bound = reach * reach * (1.0 - 1e-12);
+    /// Whether the candidates nearest to q that n turns against are strictly nearer than every
+    /// other candidate. Measured in the order that needs the fewest distances: the piece's own
+    /// face f first (the nearest, as a rule, and almost never turned against), then the faces
+    /// turned against that may come nearer than f, then, only if one did, the other faces
+    /// that may come as near as it. A ball bound skips the faces that cannot.
+    bool turned_at_point(const Vec3& q, const Vec3& n, Index f, const Scratch& candidates) const {
+        constexpr double kInfinity = std::numeric_limits<double>::infinity();
+        const double other = turns_against(n, f) ? kInfinity : distance_squared(q, f);
+        double against = kInfinity;
+        for (std::size_t j = 0; j < candidates.faces.size(); ++j) {
             const Index g = candidates.faces[j];
-            if (turns_against(n, g)) {
-                if (bound > nearest_against || bound >= nearest_other) continue;
-                nearest_against = std::min(nearest_against, distance_squared(q, g));
-            } else {
-                if (bound > std::min(nearest_other, nearest_against)) continue;
-                nearest_other = std::min(nearest_other, distance_squared(q, g));
-            }
+            if (!turns_against(n, g) || least_distance_squared(q, candidates.balls[j]) >= other)
+                continue;
+            against = std::min(against, distance_squared(q, g));
         }
-        return nearest_against < nearest_other;
+        if (!(against < other)) return false;
+        for (std::size_t j = 0; j < candidates.faces.size(); ++j) {
+            const Index g = candidates.faces[j];
+            if (g == f || turns_against(n, g) ||
+                least_distance_squared(q, candidates.balls[j]) > against) {
+                continue;
+            }
+            if (distance_squared(q, g) <= against) return false;
+        }
+        return true;
+    }
+
+    /// A lower bound of the squared distance from q to the face in `ball`, shrunk far beyond
+    /// rounding so that it never exceeds the measured distance.
+    static double least_distance_squared(const Vec3& q, const Ball& ball) {
+        const double reach = std::max(0.0, (q - ball.centre).norm() - ball.radius);
+        return reach * reach * (1.0 - 1e-12);
     }
 
     double distance_squared(const Vec3& q, Index g) const {
@@ -239,17 +536,17 @@ private:
         return squared_distance_to_triangle(q, x[t[0]], x[t[1]], x[t[2]]);
     }
 
-    /// (b) Whether piece o of split face f, of unit normal n, folds onto an output face across
-    /// one of its edges: their normals differ by more than the fold angle where the input
-    /// faces they replace did not (a piece and its own face's pieces replace one face).
-    bool is_folded(Index f, Index o, const Vec3& n) const {
-        const Triangle& t = output_.mesh.triangles[o];
+    /// (b) Whether piece c of split face number i folds onto an output face across one of its
+    /// edges: their normals differ by more than the fold angle where the input faces they
+    /// replace did not (a piece and its own face's pieces replace one face).
+    bool is_folded(Index i, Index c) const {
+        const Index f = split_.face(i);
+        const IdTriangle& piece = pieces_[c];
         for (int k = 0; k < 3; ++k) {
-            const Index across = output_face_across(f, o, t[(k + 1) % 3], t[k]);
-            if (across == kNoIndex) continue;
-            const Index g = output_.source_face[across];
-            const Vec3 other = is_split(g) ? output_normal(across) : input_.normals.face[g];
-            if (n.dot(other) >= min_fold_cosine_) continue;
+            const std::optional<Across> across =
+                face_across(i, c, piece.id[(k + 1) % 3], piece.id[k]);
+            if (!across || piece.n.dot(*across->normal) >= min_fold_cosine_) continue;
+            const Index g = across->source;
             const bool input_folded =
                 g != f && input_.normals.face[f].dot(input_.normals.face[g]) < min_fold_cosine_;
             if (!input_folded) return true;
@@ -257,100 +554,112 @@ private:
         return false;
     }
 
-    /// The output face other than o holding the directed edge a -> b, among the pieces of f and
-    /// of the faces across f's edges; kNoIndex if none (a boundary or non-manifold edge).
-    Index output_face_across(Index f, Index o, Index a, Index b) const {
-        auto holds = [&](Index g) {
-            const Triangle& t = output_.mesh.triangles[g];
-            for (int k = 0; k < 3; ++k) {
-                if (t[k] == a && t[(k + 1) % 3] == b) return true;
-            }
-            return false;
+    /// An output face across an edge: the input face it is or was cut from, and its normal.
+    struct Across {
+        Index source;
+        const Vec3* normal;
+    };
+
+    /// The output face other than piece c holding the directed edge a -> b, among the pieces
+    /// of split face i and the output faces of the faces across its edges, in that order;
+    /// none for a boundary or non-manifold edge.
+    std::optional<Across> face_across(Index i, Index c, Index a, Index b) const {
+        auto holds = [&](const Triangle& t) {
+            return (t[0] == a && t[1] == b) || (t[1] == a && t[2] == b) || (t[2] == a && t[0] == b);
         };
-        auto search = [&](Index source) {
-            for (Index g = first_[source]; g < first_[source + 1]; ++g) {
-                if (g != o && holds(g)) return g;
+        auto search = [&](Index g) -> std::optional<Across> {
+            const Index j = split_.number(g);
+            if (j == kNoIndex) {
+                if (holds(input_.mesh.triangles[g])) return Across{g, &input_.normals.face[g]};
+                return std::nullopt;
             }
-            return kNoIndex;
+            for (Index other = split_.first_piece(j); other < split_.first_piece(j + 1); ++other) {
+                if (other != c && holds(pieces_[other].id)) return Across{g, &pieces_[other].n};
+            }
+            return std::nullopt;
         };
-        Index found = search(f);
-        for (Index k = 0; k < 3 && found == kNoIndex; ++k) {
+        const Index f = split_.face(i);
+        std::optional<Across> found = search(f);
+        for (Index k = 0; k < 3 && !found; ++k) {
             const Index twin = input_.connectivity.twin[3 * f + k];
             if (twin != kNoIndex) found = search(face_of(twin));
         }
         return found;
     }
 
-    /// (c) How many pieces of split face f meet another of its pieces or an output face of an
-    /// input face within two rings of f (the candidates) whose box meets theirs. A split face
-    /// before f already checked its pieces against f's (the relation is symmetric); a crossing
-    /// with another split face blames it too. Faces sharing an edge are left to the fold check
-    /// (b), and faces wholly beyond f's cap plane (see cap_of) cannot reach its pieces.
-    std::uint32_t count_crossing_pieces(Index f, const std::vector<Index>& candidates) const {
-        const Box3& box = split_boxes_[number_[f]];
+    /// (c) How many pieces of split face number i meet another of its pieces or an output face
+    /// of an input face within two rings (the candidates) whose box meets theirs. A split face
+    /// before it already checked its pieces against these (the relation is symmetric); a
+    /// crossing with another split face blames it too. Faces wholly beyond the face's cap
+    /// plane (see cap_of) cannot reach its pieces; which pairs need a test, may_meet says.
+    std::uint32_t count_crossing_pieces(Index i, const std::vector<Index>& candidates) const {
+        const Index f = split_.face(i);
+        const Box3& box = split_boxes_[i];
         const double tolerance = kTouchRatio * std::sqrt(box.sizes().squaredNorm());
-        const Cap cap = cap_of(f, tolerance);
-        std::array<IdTriangle, 6> pieces;
+        const Index own = split_.first_piece(i);
+        const int count = static_cast<int>(split_.piece_count(i));
         std::array<bool, 6> meets{};
-        const int count = static_cast<int>(first_[f + 1] - first_[f]);
-        for (int i = 0; i < count; ++i) pieces[i] = output_triangle(first_[f] + i);
-        // Pairs sharing an edge are the fold check's.
-        auto needs_test = [&](const Triangle& s, const Triangle& t) {
-            return !shares_opposite_edge(s, t);
-        };
-        for (int i = 0; i < count; ++i) {
-            for (int j = i + 1; j < count; ++j) {
-                if (needs_test(pieces[i].id, pieces[j].id) &&
-                    triangles_meet(pieces[i], pieces[j], tolerance)) {
-                    meets[i] = meets[j] = true;
-                }
+        for (int a = 0; a < count; ++a) {
+            for (int b = a + 1; b < count; ++b) {
+                if (may_meet(own + a, piece(own + b), tolerance)) meets[a] = meets[b] = true;
             }
         }
+        auto test_against = [&](const Opponent& other) {
+            bool met = false;
+            for (int a = 0; a < count; ++a) {
+                if (!may_meet(own + a, other, tolerance)) continue;
+                meets[a] = true;
+                met = true;
+            }
+            return met;
+        };
+        const Cap cap = cap_of(i, tolerance);
         for (Index g : candidates) {
             if (g == f) continue;
-            if (is_split(g)) {
-                if (g < f || !split_boxes_[number_[g]].intersects(box)) continue;
-            } else if (lies_beyond(cap, f, g) || !input_box(g).intersects(box)) {
+            const Index j = split_.number(g);
+            if (j != kNoIndex) {
+                if (g < f || !split_boxes_[j].intersects(box)) continue;
+                bool met = false;
+                for (Index c = split_.first_piece(j); c < split_.first_piece(j + 1); ++c) {
+                    met |= test_against(piece(c));
+                }
+                if (met)
+                    std::atomic_ref<std::uint8_t>(blamed_[j]).store(1, std::memory_order_relaxed);
                 continue;
             }
-            for (Index other = first_[g]; other < first_[g + 1]; ++other) {
-                const Triangle& ids = output_.mesh.triangles[other];
-                std::optional<IdTriangle> them;  // made only if a piece needs the test
-                for (int i = 0; i < count; ++i) {
-                    if (!needs_test(pieces[i].id, ids)) continue;
-                    if (!them) them = output_triangle(other);
-                    if (!triangles_meet(pieces[i], *them, tolerance)) continue;
-                    meets[i] = true;
-                    if (is_split(g)) {
-                        std::atomic_ref<std::uint8_t>(blamed_[g])
-                            .store(1, std::memory_order_relaxed);
-                    }
-                }
-            }
+            const Triangle& t = input_.mesh.triangles[g];
+            const auto& x = input_.mesh.positions;
+            Box3 whole_box(x[t[0]]);
+            whole_box.extend(x[t[1]]).extend(x[t[2]]);
+            if (!whole_box.intersects(box) || lies_beyond(cap, f, g)) continue;
+            const IdTriangle whole =
+                IdTriangle::make(t, x[t[0]], x[t[1]], x[t[2]], input_.normals.face[g]);
+            test_against(Opponent(whole, nullptr));
         }
         return static_cast<std::uint32_t>(std::count(meets.begin(), meets.begin() + count, true));
     }
 
-    /// Per split face (in split_ order): the box of its pieces.
-    std::vector<Box3> split_boxes() const {
-        std::vector<Box3> boxes(split_.size());
-        tbb::parallel_for(std::size_t{0}, split_.size(),
-                          [&](std::size_t i) { boxes[i] = split_box(split_[i]); });
-        return boxes;
-    }
+    Opponent piece(Index c) const { return Opponent(pieces_[c], &piece_planes_[c]); }
 
-    /// The box of split face f's output: every piece lies in it.
-    Box3 split_box(Index f) const {
-        Box3 box;
-        for (Index o = first_[f]; o < first_[f + 1]; ++o) {
-            for (Index v : output_.mesh.triangles[o]) box.extend(output_.mesh.positions[v]);
+    /// Whether piece number c and output face t need the intersection test and meet by it.
+    /// They need none if their boxes lie apart; if they share an edge (the fold check's); if
+    /// they share only a vertex around which the output is a simple fan, for there they meet
+    /// nowhere else (is_simple_fan()); or if they share nothing and a plane through an edge of
+    /// one, holding its normal, leaves the other more than the tolerance beyond (the
+    /// separating axes of two triangles that triangles_meet() tries last, as segment tests).
+    /// The fan certificate replaces, for its pairs, the test's tolerance by exact sectors: it
+    /// proves they do not cross, not that they keep the tolerance apart.
+    bool may_meet(Index c, const Opponent& t, double tolerance) const {
+        const IdTriangle& s = pieces_[c];
+        if (s.box.squaredExteriorDistance(t.triangle().box) > tolerance * tolerance) return false;
+        const Sharing shared = sharing_of(s.id, t.triangle().id);
+        if (shared.opposite_edge) return false;
+        if (shared.count == 1 && simple_fan_[shared.vertex]) return false;
+        if (shared.count == 0 &&
+            (t.planes().part(s, tolerance) || piece_planes_[c].part(t.triangle(), tolerance))) {
+            return false;
         }
-        return box;
-    }
-    Box3 input_box(Index g) const {
-        Box3 box;
-        for (Index v : input_.mesh.triangles[g]) box.extend(input_.mesh.positions[v]);
-        return box;
+        return triangles_meet(s, t.triangle(), tolerance);
     }
 
     /// A half-space holding every piece of a split face: n . x >= offset (n zero: none).
@@ -360,16 +669,18 @@ private:
         double tolerance = 0.0;
     };
 
-    /// The plane of split face f, turned to the side of the vertices its pieces add, when they
-    /// all lie clearly on one side: the pieces lie in the hull of f and those vertices.
-    Cap cap_of(Index f, double tolerance) const {
+    /// The plane of split face number i, turned to the side of the vertices its pieces add,
+    /// when they all lie clearly on one side: the pieces lie in the hull of the face and those
+    /// vertices.
+    Cap cap_of(Index i, double tolerance) const {
+        const Index f = split_.face(i);
         const Vec3& n = input_.normals.face[f];
         const double offset = n.dot(input_.mesh.positions[input_.mesh.triangles[f][0]]);
         int above = 0, below = 0, added = 0;
-        for (Index o = first_[f]; o < first_[f + 1]; ++o) {
-            for (Index v : output_.mesh.triangles[o]) {
-                if (v < input_.mesh.vertex_count()) continue;
-                const double height = n.dot(output_.mesh.positions[v]) - offset;
+        for (Index c = split_.first_piece(i); c < split_.first_piece(i + 1); ++c) {
+            for (int k = 0; k < 3; ++k) {
+                if (pieces_[c].id[k] < input_.mesh.vertex_count()) continue;
+                const double height = n.dot(pieces_[c].p[k]) - offset;
                 above += height > tolerance;
                 below += height < -tolerance;
                 ++added;
@@ -394,12 +705,15 @@ private:
     const InputSurface& input_;
     const SplitMesh& output_;
     double min_fold_cosine_;
-    std::vector<Index> first_;
-    std::vector<Index> split_;   ///< the split input faces, ascending
-    std::vector<Index> number_;  ///< per input face (#F): its index in split_, or kNoIndex
-    mutable std::vector<std::uint8_t> blamed_;  ///< per input face (#F), set from any thread
     bool check_crossings_;
-    std::vector<Box3> split_boxes_;  ///< per split face, with the crossing check
+    SplitFaces split_;
+    std::vector<IdTriangle> pieces_;        ///< per piece (numbered as SplitFaces numbers them)
+    std::vector<EdgePlanes> piece_planes_;  ///< per piece, with the crossing check
+    std::vector<Box3> split_boxes_;         ///< per split face: the box of its pieces
+    /// Per output vertex (#V out), with the crossing check: 1 where is_simple_fan() holds (only
+    /// vertices of split faces are looked at).
+    std::vector<std::uint8_t> simple_fan_;
+    mutable std::vector<std::uint8_t> blamed_;  ///< per split face, set from any thread
 };
 
 }  // namespace
