@@ -202,18 +202,21 @@ struct FaceVerdict {
     bool is_harmful() const { return turned + folded + crossing > 0; }
 };
 
-/// A ball holding a face: a lower bound of any point's distance to it, for a few flops.
-struct Ball {
-    Vec3 centre;
-    double radius;
-};
+/// Whether two boxes lie more than `tolerance` apart along one of the axes (then the boxes,
+/// and whatever they hold, lie more than `tolerance` apart).
+bool boxes_apart(const Box3& a, const Box3& b, double tolerance) {
+    for (int k = 0; k < 3; ++k) {
+        if (a.min()[k] > b.max()[k] + tolerance || b.min()[k] > a.max()[k] + tolerance) return true;
+    }
+    return false;
+}
 
 /// One thread's scratch: the last split face that reached each input vertex and face, the
-/// faces within two rings and their balls.
+/// faces within two rings and their boxes.
 struct Scratch {
     std::vector<Index> vertex_mark, face_mark;
     std::vector<Index> vertices, faces;
-    std::vector<Ball> balls;
+    std::vector<Box3> boxes;
     Scratch(std::size_t vertex_count, std::size_t face_count)
         : vertex_mark(vertex_count, kNoIndex), face_mark(face_count, kNoIndex) {}
 };
@@ -402,7 +405,7 @@ private:
     void gather_two_rings(Index f, Index stamp, Scratch& scratch) const {
         scratch.vertices.clear();
         scratch.faces.clear();
-        scratch.balls.clear();
+        scratch.boxes.clear();
         for (Index v : input_.mesh.triangles[f]) {
             for (Index g : input_.connectivity.faces_around(v)) {
                 for (Index u : input_.mesh.triangles[g]) {
@@ -421,20 +424,14 @@ private:
         }
     }
 
-    /// The balls of scratch.faces, made the first time a piece of the face needs them.
-    void ensure_balls(Scratch& scratch) const {
-        if (!scratch.balls.empty()) return;
-        for (Index g : scratch.faces) scratch.balls.push_back(ball_of(g));
-    }
-
-    Ball ball_of(Index g) const {
-        const Triangle& t = input_.mesh.triangles[g];
+    /// The boxes of scratch.faces, made the first time a piece of the face needs them.
+    void ensure_boxes(Scratch& scratch) const {
+        if (!scratch.boxes.empty()) return;
         const auto& x = input_.mesh.positions;
-        const Vec3 centre = (x[t[0]] + x[t[1]] + x[t[2]]) / 3.0;
-        const double radius =
-            std::sqrt(std::max({(x[t[0]] - centre).squaredNorm(), (x[t[1]] - centre).squaredNorm(),
-                                (x[t[2]] - centre).squaredNorm()}));
-        return {centre, radius};
+        for (Index g : scratch.faces) {
+            const Triangle& t = input_.mesh.triangles[g];
+            scratch.boxes.push_back(Box3(x[t[0]]).extend(x[t[1]]).extend(x[t[2]]));
+        }
     }
 
     /// The cosine of the widest angle between f's normal and a candidate's: every candidate's
@@ -471,7 +468,7 @@ private:
             std::any_of(candidates.faces.begin(), candidates.faces.end(),
                         [&](Index g) { return turns_against(n, g); });
         if (!turns_against_some) return false;
-        ensure_balls(candidates);
+        ensure_boxes(candidates);
         const Triangle& t = piece.id;
         const auto& x = output_.mesh.positions;
         for (Index v : t) {
@@ -500,14 +497,14 @@ private:
     /// other candidate. Measured in the order that needs the fewest distances: the piece's own
     /// face f first (the nearest, as a rule, and almost never turned against), then the faces
     /// turned against that may come nearer than f, then, only if one did, the other faces
-    /// that may come as near as it. A ball bound skips the faces that cannot.
+    /// that may come as near as it. The distance to a face's box skips the faces that cannot.
     bool turned_at_point(const Vec3& q, const Vec3& n, Index f, const Scratch& candidates) const {
         constexpr double kInfinity = std::numeric_limits<double>::infinity();
         const double other = turns_against(n, f) ? kInfinity : distance_squared(q, f);
         double against = kInfinity;
         for (std::size_t j = 0; j < candidates.faces.size(); ++j) {
             const Index g = candidates.faces[j];
-            if (!turns_against(n, g) || least_distance_squared(q, candidates.balls[j]) >= other)
+            if (!turns_against(n, g) || least_distance_squared(q, candidates.boxes[j]) >= other)
                 continue;
             against = std::min(against, distance_squared(q, g));
         }
@@ -515,7 +512,7 @@ private:
         for (std::size_t j = 0; j < candidates.faces.size(); ++j) {
             const Index g = candidates.faces[j];
             if (g == f || turns_against(n, g) ||
-                least_distance_squared(q, candidates.balls[j]) > against) {
+                least_distance_squared(q, candidates.boxes[j]) > against) {
                 continue;
             }
             if (distance_squared(q, g) <= against) return false;
@@ -523,11 +520,10 @@ private:
         return true;
     }
 
-    /// A lower bound of the squared distance from q to the face in `ball`, shrunk far beyond
+    /// A lower bound of the squared distance from q to the face in `box`, shrunk far beyond
     /// rounding so that it never exceeds the measured distance.
-    static double least_distance_squared(const Vec3& q, const Ball& ball) {
-        const double reach = std::max(0.0, (q - ball.centre).norm() - ball.radius);
-        return reach * reach * (1.0 - 1e-12);
+    static double least_distance_squared(const Vec3& q, const Box3& box) {
+        return box.squaredExteriorDistance(q) * (1.0 - 1e-12);
     }
 
     double distance_squared(const Vec3& q, Index g) const {
@@ -651,7 +647,7 @@ private:
     /// proves they do not cross, not that they keep the tolerance apart.
     bool may_meet(Index c, const Opponent& t, double tolerance) const {
         const IdTriangle& s = pieces_[c];
-        if (s.box.squaredExteriorDistance(t.triangle().box) > tolerance * tolerance) return false;
+        if (boxes_apart(s.box, t.triangle().box, tolerance)) return false;
         const Sharing shared = sharing_of(s.id, t.triangle().id);
         if (shared.opposite_edge) return false;
         if (shared.count == 1 && simple_fan_[shared.vertex]) return false;
@@ -662,11 +658,12 @@ private:
         return triangles_meet(s, t.triangle(), tolerance);
     }
 
-    /// A half-space holding every piece of a split face: n . x >= offset (n zero: none).
+    /// A half-space holding every piece of a split face: n . x >= offset (if `holds`).
     struct Cap {
         Vec3 n = Vec3::Zero();
         double offset = 0.0;
         double tolerance = 0.0;
+        bool holds = false;
     };
 
     /// The plane of split face number i, turned to the side of the vertices its pieces add,
@@ -686,14 +683,14 @@ private:
                 ++added;
             }
         }
-        if (above == added) return {n, offset, tolerance};
-        if (below == added) return {-n, -offset, tolerance};
+        if (above == added) return {n, offset, tolerance, true};
+        if (below == added) return {-n, -offset, tolerance, true};
         return {};
     }
 
     /// Whether unsplit face g lies beyond the cap, but for the vertices it shares with f.
     bool lies_beyond(const Cap& cap, Index f, Index g) const {
-        if (cap.n.isZero(0.0)) return false;
+        if (!cap.holds) return false;
         const Triangle& own = input_.mesh.triangles[f];
         for (Index v : input_.mesh.triangles[g]) {
             if (v == own[0] || v == own[1] || v == own[2]) continue;
