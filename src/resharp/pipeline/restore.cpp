@@ -97,6 +97,18 @@ void withdraw_points_of(const std::vector<Index>& faces, const PointSlots& slots
     }
 }
 
+/// Per face (#F): 1 where the slots of `after` differ from those of `before` (so its pieces do).
+std::vector<std::uint8_t> changed_faces(const PointSlots& before, const PointSlots& after) {
+    std::vector<std::uint8_t> changed(after.corner_point.size(), 0);
+    for (Index f = 0; f < changed.size(); ++f) {
+        changed[f] = before.corner_point[f] != after.corner_point[f] ||
+                     before.edge_point[3 * f] != after.edge_point[3 * f] ||
+                     before.edge_point[3 * f + 1] != after.edge_point[3 * f + 1] ||
+                     before.edge_point[3 * f + 2] != after.edge_point[3 * f + 2];
+    }
+    return changed;
+}
+
 /// The input as its own split: no face replaced.
 SplitMesh unchanged(const Mesh& mesh) {
     SplitMesh out;
@@ -167,6 +179,7 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
                                       feature_normals.normal, options.points);
     });
     std::vector<std::uint8_t> withdrawn(r.points.points.size(), 0);
+    PointSlots checked;  // the slots of the last split checked
     // Bound: max_harm_rounds; and every round that does not end the loop withdraws at least one
     // point (harmful faces are split faces, which hold points).
     for (int round = 0; round < options.max_harm_rounds; ++round) {
@@ -180,7 +193,14 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
         clock.run(Stage::Split,
                   [&] { r.output = split_faces(input.mesh, r.points.points, guarded.accepted); });
         HarmReport harm;
-        clock.run(Stage::HarmCheck, [&] { harm = check_harm(input, r.output, options.harm); });
+        clock.run(Stage::HarmCheck, [&] {
+            // After the first round only the faces near those whose pieces changed are judged
+            // again (check_harm()): the faces the last check found harmful lost their points.
+            const std::vector<std::uint8_t> changed =
+                round == 0 ? std::vector<std::uint8_t>{} : changed_faces(checked, guarded.accepted);
+            harm = check_harm(input, r.output, options.harm, changed);
+        });
+        checked = std::move(guarded.accepted);
         ++r.rounds;
         if (round == 0) r.first_harm = harm;
         if (harm.is_harmless()) {
@@ -188,7 +208,7 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
             return r;
         }
         const std::size_t before = r.undone_points;
-        withdraw_points_of(harm.harmful_faces, guarded.accepted, withdrawn, r.undone_points);
+        withdraw_points_of(harm.harmful_faces, checked, withdrawn, r.undone_points);
         RESHARP_ASSERT(r.undone_points > before);
     }
     r.rounds_exhausted = true;

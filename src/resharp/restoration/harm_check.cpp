@@ -9,6 +9,7 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <string>
 
 #include "resharp/core/assert.h"
 #include "resharp/core/errors.h"
@@ -267,7 +268,8 @@ private:
 
 class HarmChecker {
 public:
-    HarmChecker(const InputSurface& input, const SplitMesh& output, const HarmCheckOptions& options)
+    HarmChecker(const InputSurface& input, const SplitMesh& output, const HarmCheckOptions& options,
+                std::span<const std::uint8_t> changed)
         : input_(input),
           output_(output),
           min_fold_cosine_(std::cos(options.fold_angle_deg * std::numbers::pi / 180.0)),
@@ -277,6 +279,7 @@ public:
           piece_planes_(split_.piece_count()),
           split_boxes_(split_.size()),
           blamed_(split_.size(), 0) {
+        choose_judged(changed);
         describe_pieces();
         if (check_crossings_) find_simple_fans();
     }
@@ -285,8 +288,9 @@ public:
         std::vector<FaceVerdict> verdicts(split_.size());
         tbb::enumerable_thread_specific<Scratch> scratch(input_.mesh.vertex_count(),
                                                          input_.mesh.face_count());
-        tbb::parallel_for(std::size_t{0}, split_.size(), [&](std::size_t i) {
-            verdicts[i] = judge(static_cast<Index>(i), scratch.local());
+        tbb::parallel_for(std::size_t{0}, judged_list_.size(), [&](std::size_t k) {
+            const Index i = judged_list_[k];
+            verdicts[i] = judge(i, scratch.local());
         });
         HarmReport report;
         for (Index i = 0; i < split_.size(); ++i) {
@@ -300,10 +304,51 @@ public:
     }
 
 private:
-    /// Every piece as a triangle with its normal and box, and every split face's box.
+    /// Which split faces to judge (all, or those within two rings of a changed face), and which
+    /// to describe: those and the split faces within two rings of them, which their checks read.
+    void choose_judged(std::span<const std::uint8_t> changed) {
+        judged_.assign(split_.size(), changed.empty() ? 1 : 0);
+        described_.assign(split_.size(), changed.empty() ? 1 : 0);
+        if (!changed.empty()) {
+            Scratch scratch(input_.mesh.vertex_count(), input_.mesh.face_count());
+            Index stamp = 0;
+            std::vector<Index> changed_faces;
+            for (Index f = 0; f < changed.size(); ++f) {
+                if (changed[f]) changed_faces.push_back(f);
+            }
+            const std::vector<Index> judged =
+                split_faces_near(changed_faces, judged_, scratch, stamp);
+            split_faces_near(judged, described_, scratch, stamp);
+        }
+        for (Index i = 0; i < split_.size(); ++i) {
+            if (judged_[i]) judged_list_.push_back(i);
+        }
+    }
+
+    /// Marks in `marks` (per split face) the split faces within two rings of `faces` (input
+    /// faces); gives them as input faces. Each gather takes a new stamp. Bound: #faces times
+    /// the size of a two-ring.
+    std::vector<Index> split_faces_near(const std::vector<Index>& faces,
+                                        std::vector<std::uint8_t>& marks, Scratch& scratch,
+                                        Index& stamp) const {
+        std::vector<Index> near;
+        for (Index f : faces) {
+            gather_two_rings(f, stamp++, scratch);
+            for (Index g : scratch.faces) {
+                const Index j = split_.number(g);
+                if (j == kNoIndex || marks[j]) continue;
+                marks[j] = 1;
+                near.push_back(g);
+            }
+        }
+        return near;
+    }
+
+    /// Every described piece as a triangle with its normal and box, and its split face's box.
     void describe_pieces() {
         const auto& x = output_.mesh.positions;
         tbb::parallel_for(Index{0}, static_cast<Index>(split_.size()), [&](Index i) {
+            if (!described_[i]) return;
             Box3 box;
             for (Index k = 0; k < split_.piece_count(i); ++k) {
                 const Triangle& t = output_.mesh.triangles[split_.first_output(i) + k];
@@ -316,24 +361,28 @@ private:
         });
     }
 
-    /// Marks the vertices of split faces around which the output is a simple fan (see
-    /// is_simple_fan()): the input vertices of split faces, and every new vertex.
+    /// Marks the vertices of judged split faces around which the output is a simple fan (see
+    /// is_simple_fan()): only pairs with a piece of a judged face ask.
     void find_simple_fans() {
         const Index input_vertices = static_cast<Index>(input_.mesh.vertex_count());
-        simple_fan_.assign(output_.mesh.vertex_count(), 0);
-        std::vector<std::uint8_t> wanted(input_vertices, 0);
-        for (Index i = 0; i < split_.size(); ++i) {
-            for (Index v : input_.mesh.triangles[split_.face(i)]) wanted[v] = 1;
+        const Index output_vertices = static_cast<Index>(output_.mesh.vertex_count());
+        simple_fan_.assign(output_vertices, 0);
+        std::vector<std::uint8_t> wanted(output_vertices, 0);
+        for (Index i : judged_list_) {
+            for (Index c = split_.first_piece(i); c < split_.first_piece(i + 1); ++c) {
+                for (Index v : pieces_[c].id) wanted[v] = 1;
+            }
         }
-        tbb::parallel_for(Index{0}, input_vertices, [&](Index v) {
-            if (wanted[v])
-                simple_fan_[v] = is_simple_fan(output_.mesh.positions, v, fan_of_input(v));
-        });
         const PiecesAround around = pieces_around_new_vertices();
-        tbb::parallel_for(Index{0}, static_cast<Index>(around.first.size() - 1), [&](Index i) {
-            const Index v = input_vertices + i;
+        tbb::parallel_for(Index{0}, output_vertices, [&](Index v) {
+            if (!wanted[v]) return;
+            if (v < input_vertices) {
+                simple_fan_[v] = is_simple_fan(output_.mesh.positions, v, fan_of_input(v));
+                return;
+            }
             Fan fan;
-            for (Index k = around.first[i]; k < around.first[i + 1]; ++k) {
+            for (Index k = around.first[v - input_vertices];
+                 k < around.first[v - input_vertices + 1]; ++k) {
                 const IdTriangle& piece = pieces_[around.pieces[k]];
                 fan.add(piece.id, v, piece.n);
             }
@@ -614,7 +663,8 @@ private:
             if (g == f) continue;
             const Index j = split_.number(g);
             if (j != kNoIndex) {
-                if (g < f || !split_boxes_[j].intersects(box)) continue;
+                // A judged split face before f tested this pair already.
+                if ((g < f && judged_[j]) || !split_boxes_[j].intersects(box)) continue;
                 bool met = false;
                 for (Index c = split_.first_piece(j); c < split_.first_piece(j + 1); ++c) {
                     met |= test_against(piece(c));
@@ -706,6 +756,9 @@ private:
     SplitFaces split_;
     std::vector<IdTriangle> pieces_;        ///< per piece (numbered as SplitFaces numbers them)
     std::vector<EdgePlanes> piece_planes_;  ///< per piece, with the crossing check
+    std::vector<std::uint8_t> judged_;      ///< per split face: judged by this check
+    std::vector<std::uint8_t> described_;   ///< per split face: its pieces described
+    std::vector<Index> judged_list_;        ///< the judged split faces, ascending
     std::vector<Box3> split_boxes_;         ///< per split face: the box of its pieces
     /// Per output vertex (#V out), with the crossing check: 1 where is_simple_fan() holds (only
     /// vertices of split faces are looked at).
@@ -716,13 +769,17 @@ private:
 }  // namespace
 
 HarmReport check_harm(const InputSurface& input, const SplitMesh& output,
-                      const HarmCheckOptions& options) {
+                      const HarmCheckOptions& options, std::span<const std::uint8_t> changed) {
     if (!(options.fold_angle_deg > 90.0 && options.fold_angle_deg <= 180.0)) {
         throw InvalidInput("harm check: fold angle must lie in (90, 180] degrees");
     }
+    if (!changed.empty() && changed.size() != input.mesh.face_count()) {
+        throw InvalidInput("harm check: " + std::to_string(changed.size()) + " change flags for " +
+                           std::to_string(input.mesh.face_count()) + " faces");
+    }
     RESHARP_EXPENSIVE_ASSERT(output.source_face.size() == output.mesh.face_count());
     RESHARP_EXPENSIVE_ASSERT(std::is_sorted(output.source_face.begin(), output.source_face.end()));
-    return HarmChecker(input, output, options).run();
+    return HarmChecker(input, output, options, changed).run();
 }
 
 }  // namespace resharp

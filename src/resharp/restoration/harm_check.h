@@ -4,6 +4,8 @@
 /// input faces' pieces do harm; undoing them is the pipeline's (restore()).
 
 #include <cstddef>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "resharp/restoration/input_surface.h"
@@ -35,8 +37,16 @@ struct HarmReport {
 /// Takes the input surface and its split; checks the pieces of every split face (faces left
 /// whole are the input's own and are not judged). A fault between a piece and another split
 /// face's piece blames both faces.
-/// \throws InvalidInput if the fold angle is not in (90, 180].
+///
+/// A later round may pass `changed` (#F): the input faces whose pieces differ from those of an
+/// earlier split this check judged, every face it found harmful among them. Then only the split
+/// faces within two rings of a changed face are judged: a face's verdict depends on nothing but
+/// its own pieces and those of the faces within two rings of it, so elsewhere it stands (no
+/// harm). The counts then cover the judged faces alone. Empty: every split face is judged.
+/// \throws InvalidInput if the fold angle is not in (90, 180], or `changed` is neither empty
+///         nor one flag per input face.
 HarmReport check_harm(const InputSurface& input, const SplitMesh& output,
-                      const HarmCheckOptions& options = {});
+                      const HarmCheckOptions& options = {},
+                      std::span<const std::uint8_t> changed = {});
 
 }  // namespace resharp
