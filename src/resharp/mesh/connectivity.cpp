@@ -31,22 +31,52 @@ struct EdgeEntry {
 };
 constexpr Index kForwardBit = Index{1} << 31;
 
-/// The half-edges filed under v: every half-edge whose lower vertex is v lies in a face of v's
-/// ring, so the ring (already sorted by face) yields them without a second counting sort over
-/// all half-edges, and they sit side by side for the twin search.
-void file_halfedges_of(const Mesh& mesh, const Connectivity& c, Index v,
-                       std::vector<EdgeEntry>& filed) {
-    filed.clear();
+/// The half-edges filed under v, at the start of `filed` (grown as needed; never shrunk, so
+/// that a vertex costs no allocation); gives their number. Every half-edge whose
+/// lower vertex is v lies in a face of v's ring, so the ring (already sorted by face) yields
+/// them without a second counting sort over all half-edges, and they sit side by side for the
+/// twin search. In a face with three distinct vertices only the two edges at v can be filed
+/// under it; a face with a repeated vertex has all three looked at.
+std::size_t file_halfedges_of(const Mesh& mesh, const Connectivity& c, Index v,
+                              std::vector<EdgeEntry>& filed) {
+    const auto ring = c.faces_around(v);
+    if (filed.size() < 3 * ring.size()) filed.resize(3 * ring.size());  // the most it can file
+    EdgeEntry* next = filed.data();
+    auto file = [&](Index f, Index k, Index from, Index to) {
+        if (std::min(from, to) == v) {
+            *next++ = {std::max(from, to), (3 * f + k) | (from < to ? kForwardBit : 0)};
+        }
+    };
     Index previous = kNoIndex;
-    for (Index f : c.faces_around(v)) {
+    for (Index f : ring) {
         if (f == previous) continue;  // a face using v twice is listed twice
         previous = f;
         const Triangle& t = mesh.triangles[f];
-        for (Index k = 0; k < 3; ++k) {
-            const Index from = t[k], to = t[(k + 1) % 3];
-            if (std::min(from, to) != v) continue;
-            filed.push_back({std::max(from, to), (3 * f + k) | (from < to ? kForwardBit : 0)});
+        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) {
+            for (Index k = 0; k < 3; ++k) file(f, k, t[k], t[(k + 1) % 3]);
+            continue;
         }
+        const Index k = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+        const Index before = (k + 2) % 3;
+        file(f, k, v, t[(k + 1) % 3]);  // the edge leaving v
+        file(f, before, t[before], v);  // the edge entering v
+    }
+    return static_cast<std::size_t>(next - filed.data());
+}
+
+/// Sorts the entries by their other vertex: insertion sort for the handful of a grid mesh's
+/// vertex, std::sort for the long rings of collapsed meshes.
+void sort_by_other(std::span<EdgeEntry> filed) {
+    if (filed.size() > 16) {
+        std::sort(filed.begin(), filed.end(),
+                  [](const EdgeEntry& a, const EdgeEntry& b) { return a.other < b.other; });
+        return;
+    }
+    for (std::size_t i = 1; i < filed.size(); ++i) {
+        const EdgeEntry e = filed[i];
+        std::size_t j = i;
+        for (; j > 0 && filed[j - 1].other > e.other; --j) filed[j] = filed[j - 1];
+        filed[j] = e;
     }
 }
 
@@ -73,8 +103,7 @@ EdgeKind kind_of_edge(std::span<const EdgeEntry> on_edge, Index low) {
 /// comparisons than counting every entry's partners among all the others.
 void link_edges_of(std::span<EdgeEntry> filed, Index low, std::vector<Index>& twin,
                    std::vector<EdgeKind>& kind) {
-    std::sort(filed.begin(), filed.end(),
-              [](const EdgeEntry& a, const EdgeEntry& b) { return a.other < b.other; });
+    sort_by_other(filed);
     for (std::size_t first = 0, end = 0; first < filed.size(); first = end) {
         while (end < filed.size() && filed[end].other == filed[first].other) ++end;
         const std::span<const EdgeEntry> on_edge(filed.data() + first, end - first);
@@ -103,8 +132,8 @@ Connectivity build_connectivity(const Mesh& mesh) {
                       [&](const auto& range) {
                           std::vector<EdgeEntry> filed;
                           for (Index v = range.begin(); v != range.end(); ++v) {
-                              file_halfedges_of(mesh, c, v, filed);
-                              link_edges_of(filed, v, c.twin, c.edge_kind);
+                              const std::size_t count = file_halfedges_of(mesh, c, v, filed);
+                              link_edges_of({filed.data(), count}, v, c.twin, c.edge_kind);
                           }
                       });
     return c;

@@ -65,58 +65,40 @@ Sharing sharing_of(const Triangle& s, const Triangle& t) {
     return shared;
 }
 
-/// The three planes through a triangle's edges that hold its normal, facing out: a face wholly
-/// more than the tolerance beyond one of them lies more than the tolerance from the triangle.
-/// Zero for a degenerate triangle (it parts nothing).
-struct EdgePlanes {
-    /// Per edge: the outward normal (ccw about the face's normal), of the edge's length, so
-    /// that heights come out scaled by the length and no square root is taken.
-    std::array<Vec3, 3> out{Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
-    std::array<double, 3> offset{};          ///< out . (a point of the edge)
-    std::array<double, 3> length_squared{};  ///< of out
+/// An output triangle as the crossing test reads it: its vertex ids, corners, unit normal and
+/// box, made where a test needs it rather than stored for every piece.
+struct Shape {
+    Triangle id;
+    std::array<const Vec3*, 3> p;
+    const Vec3* n;
+    Box3 box;
 
-    EdgePlanes() = default;
-    explicit EdgePlanes(const IdTriangle& t) {
-        for (int k = 0; k < 3; ++k) {
-            out[k] = (t.p[(k + 1) % 3] - t.p[k]).cross(t.n);
-            offset[k] = out[k].dot(t.p[k]);
-            length_squared[k] = out[k].squaredNorm();
-        }
+    Shape(const Triangle& t, const std::vector<Vec3>& x, const Vec3& normal)
+        : id(t), p{&x[t[0]], &x[t[1]], &x[t[2]]}, n(&normal), box(x[t[0]]) {
+        box.extend(x[t[1]]).extend(x[t[2]]);
     }
-
-    /// Whether every vertex of t lies more than `tolerance` beyond one of the planes.
-    bool part(const IdTriangle& t, double tolerance) const {
-        for (int k = 0; k < 3; ++k) {
-            const double limit = tolerance * tolerance * length_squared[k];
-            auto beyond = [&](const Vec3& x) {
-                const double height = out[k].dot(x) - offset[k];
-                return height > 0.0 && height * height > limit;
-            };
-            if (length_squared[k] > 0.0 && beyond(t.p[0]) && beyond(t.p[1]) && beyond(t.p[2])) {
-                return true;
-            }
-        }
-        return false;
-    }
+    IdTriangle exact() const { return IdTriangle::make(id, *p[0], *p[1], *p[2], *n); }
 };
 
-/// A triangle the crossing test holds pieces against, with its edge planes: given, or made
-/// the first time a test needs them.
-class Opponent {
-public:
-    Opponent(const IdTriangle& triangle, const EdgePlanes* planes)
-        : triangle_(triangle), planes_(planes) {}
-    const IdTriangle& triangle() const { return triangle_; }
-    const EdgePlanes& planes() const {
-        if (planes_ == nullptr) planes_ = &made_.emplace(triangle_);
-        return *planes_;
+/// Whether every corner of b lies more than `tolerance` beyond one of the planes through a's
+/// edges that hold a's normal (facing out: counter-clockwise about it). Then b lies more than
+/// `tolerance` from a. The planes' normals keep the edges' lengths, so that heights come out
+/// scaled by them and no root is taken; a degenerate triangle parts nothing.
+bool parted_by_an_edge(const Shape& a, const Shape& b, double tolerance) {
+    for (int k = 0; k < 3; ++k) {
+        const Vec3& from = *a.p[k];
+        const Vec3 out = (*a.p[(k + 1) % 3] - from).cross(*a.n);
+        const double length_squared = out.squaredNorm();
+        if (!(length_squared > 0.0)) continue;
+        const double offset = out.dot(from), limit = tolerance * tolerance * length_squared;
+        auto beyond = [&](const Vec3* x) {
+            const double height = out.dot(*x) - offset;
+            return height > 0.0 && height * height > limit;
+        };
+        if (beyond(b.p[0]) && beyond(b.p[1]) && beyond(b.p[2])) return true;
     }
-
-private:
-    const IdTriangle& triangle_;
-    mutable const EdgePlanes* planes_;
-    mutable std::optional<EdgePlanes> made_;
-};
+    return false;
+}
 
 /// One face around a vertex (the apex): the vertices after and before the apex in the face's
 /// counter-clockwise order, and its unit normal.
@@ -197,12 +179,6 @@ bool is_simple_fan(const std::vector<Vec3>& x, Index apex, const Fan& fan) {
     return crossings == 1;
 }
 
-/// What the checks found on one split face's pieces.
-struct FaceVerdict {
-    std::uint32_t turned = 0, folded = 0, crossing = 0;
-    bool is_harmful() const { return turned + folded + crossing > 0; }
-};
-
 /// Whether two boxes lie more than `tolerance` apart along one of the axes (then the boxes,
 /// and whatever they hold, lie more than `tolerance` apart).
 bool boxes_apart(const Box3& a, const Box3& b, double tolerance) {
@@ -212,17 +188,24 @@ bool boxes_apart(const Box3& a, const Box3& b, double tolerance) {
     return false;
 }
 
-/// One thread's scratch: the last split face that reached each input vertex and face, the
-/// faces within two rings and their boxes.
+/// What the checks found on one split face's pieces.
+struct FaceVerdict {
+    std::uint32_t turned = 0, folded = 0, crossing = 0;
+    bool is_harmful() const { return turned + folded + crossing > 0; }
+};
+
+/// One thread's scratch: which input vertices and faces the current gather reached (cleared
+/// by the next one, through the lists), the faces within two rings and their boxes.
 struct Scratch {
-    std::vector<Index> vertex_mark, face_mark;
+    std::vector<std::uint8_t> vertex_mark, face_mark;
     std::vector<Index> vertices, faces;
     std::vector<Box3> boxes;
     Scratch(std::size_t vertex_count, std::size_t face_count)
-        : vertex_mark(vertex_count, kNoIndex), face_mark(face_count, kNoIndex) {}
+        : vertex_mark(vertex_count, 0), face_mark(face_count, 0) {}
 };
 
-/// The split faces of an output mesh, numbered in input order, and their pieces.
+/// The split faces of an output mesh, numbered in input order, and their pieces, numbered
+/// from 0 in output order.
 class SplitFaces {
 public:
     /// Takes the split (source faces ascending) and the input's face count.
@@ -253,7 +236,7 @@ public:
     /// The number of input face f among the split faces, or kNoIndex if f was left whole.
     Index number(Index f) const { return number_[f]; }
     /// The pieces of split face i: numbers first_piece(i) .. first_piece(i + 1) - 1, output
-    /// faces from first_output(i) on.
+    /// faces first_output(i) on.
     Index first_piece(Index i) const { return first_piece_[i]; }
     Index first_output(Index i) const { return first_output_[i]; }
     Index piece_count(Index i) const { return first_piece_[i + 1] - first_piece_[i]; }
@@ -273,11 +256,10 @@ public:
         : input_(input),
           output_(output),
           min_fold_cosine_(std::cos(options.fold_angle_deg * std::numbers::pi / 180.0)),
+          half_fold_cosine_(std::cos(options.fold_angle_deg * std::numbers::pi / 360.0)),
           check_crossings_(options.check_crossings),
           split_(output, input.mesh.face_count()),
-          pieces_(split_.piece_count()),
-          piece_planes_(split_.piece_count()),
-          split_boxes_(split_.size()),
+          piece_normal_(split_.piece_count()),
           blamed_(split_.size(), 0) {
         choose_judged(changed);
         describe_pieces();
@@ -297,13 +279,22 @@ public:
             report.turned += verdicts[i].turned;
             report.folded += verdicts[i].folded;
             report.crossing += verdicts[i].crossing;
-            if (verdicts[i].is_harmful() || blamed_[i])
+            if (verdicts[i].is_harmful() || blamed_[i]) {
                 report.harmful_faces.push_back(split_.face(i));
+            }
         }
         return report;
     }
 
 private:
+    const Triangle& piece_triangle(Index i, Index k) const {
+        return output_.mesh.triangles[split_.first_output(i) + k];
+    }
+    Shape piece_shape(Index i, Index k) const {
+        return Shape(piece_triangle(i, k), output_.mesh.positions,
+                     piece_normal_[split_.first_piece(i) + k]);
+    }
+
     /// Which split faces to judge (all, or those within two rings of a changed face), and which
     /// to describe: those and the split faces within two rings of them, which their checks read.
     void choose_judged(std::span<const std::uint8_t> changed) {
@@ -311,14 +302,12 @@ private:
         described_.assign(split_.size(), changed.empty() ? 1 : 0);
         if (!changed.empty()) {
             Scratch scratch(input_.mesh.vertex_count(), input_.mesh.face_count());
-            Index stamp = 0;
             std::vector<Index> changed_faces;
             for (Index f = 0; f < changed.size(); ++f) {
                 if (changed[f]) changed_faces.push_back(f);
             }
-            const std::vector<Index> judged =
-                split_faces_near(changed_faces, judged_, scratch, stamp);
-            split_faces_near(judged, described_, scratch, stamp);
+            const std::vector<Index> judged = split_faces_near(changed_faces, judged_, scratch);
+            split_faces_near(judged, described_, scratch);
         }
         for (Index i = 0; i < split_.size(); ++i) {
             if (judged_[i]) judged_list_.push_back(i);
@@ -326,14 +315,12 @@ private:
     }
 
     /// Marks in `marks` (per split face) the split faces within two rings of `faces` (input
-    /// faces); gives them as input faces. Each gather takes a new stamp. Bound: #faces times
-    /// the size of a two-ring.
+    /// faces); gives them as input faces. Bound: #faces times the size of a two-ring.
     std::vector<Index> split_faces_near(const std::vector<Index>& faces,
-                                        std::vector<std::uint8_t>& marks, Scratch& scratch,
-                                        Index& stamp) const {
+                                        std::vector<std::uint8_t>& marks, Scratch& scratch) const {
         std::vector<Index> near;
         for (Index f : faces) {
-            gather_two_rings(f, stamp++, scratch);
+            gather_two_rings(f, scratch);
             for (Index g : scratch.faces) {
                 const Index j = split_.number(g);
                 if (j == kNoIndex || marks[j]) continue;
@@ -344,20 +331,16 @@ private:
         return near;
     }
 
-    /// Every described piece as a triangle with its normal and box, and its split face's box.
+    /// The unit normal of every described piece (zero for a degenerate one).
     void describe_pieces() {
         const auto& x = output_.mesh.positions;
         tbb::parallel_for(Index{0}, static_cast<Index>(split_.size()), [&](Index i) {
             if (!described_[i]) return;
-            Box3 box;
             for (Index k = 0; k < split_.piece_count(i); ++k) {
-                const Triangle& t = output_.mesh.triangles[split_.first_output(i) + k];
-                IdTriangle& piece = pieces_[split_.first_piece(i) + k];
-                piece = IdTriangle::make(t, x[t[0]], x[t[1]], x[t[2]]);
-                piece_planes_[split_.first_piece(i) + k] = EdgePlanes(piece);
-                box.extend(piece.box);
+                const Triangle& t = piece_triangle(i, k);
+                piece_normal_[split_.first_piece(i) + k] =
+                    triangle_normal(x[t[0]], x[t[1]], x[t[2]]);
             }
-            split_boxes_[i] = box;
         });
     }
 
@@ -369,80 +352,88 @@ private:
         simple_fan_.assign(output_vertices, 0);
         std::vector<std::uint8_t> wanted(output_vertices, 0);
         for (Index i : judged_list_) {
-            for (Index c = split_.first_piece(i); c < split_.first_piece(i + 1); ++c) {
-                for (Index v : pieces_[c].id) wanted[v] = 1;
+            for (Index k = 0; k < split_.piece_count(i); ++k) {
+                for (Index v : piece_triangle(i, k)) wanted[v] = 1;
             }
         }
         const PiecesAround around = pieces_around_new_vertices();
         tbb::parallel_for(Index{0}, output_vertices, [&](Index v) {
             if (!wanted[v]) return;
-            if (v < input_vertices) {
-                simple_fan_[v] = is_simple_fan(output_.mesh.positions, v, fan_of_input(v));
-                return;
-            }
             Fan fan;
-            for (Index k = around.first[v - input_vertices];
-                 k < around.first[v - input_vertices + 1]; ++k) {
-                const IdTriangle& piece = pieces_[around.pieces[k]];
-                fan.add(piece.id, v, piece.n);
+            if (v < input_vertices) {
+                add_input_fan(v, fan);
+            } else {
+                for (Index k = around.first[v - input_vertices];
+                     k < around.first[v - input_vertices + 1]; ++k) {
+                    const Index o = around.output[k];
+                    fan.add(output_.mesh.triangles[o], v, piece_normal_[around.piece[k]]);
+                }
             }
             simple_fan_[v] = is_simple_fan(output_.mesh.positions, v, fan);
         });
     }
 
-    /// The output faces around input vertex v: its input faces left whole, and the pieces of
-    /// the split ones that hold v.
-    Fan fan_of_input(Index v) const {
-        Fan fan;
+    /// Adds to `fan` the output faces around input vertex v: its input faces left whole, and
+    /// the pieces of the split ones that hold v.
+    void add_input_fan(Index v, Fan& fan) const {
         for (Index g : input_.connectivity.faces_around(v)) {
             const Index j = split_.number(g);
             if (j == kNoIndex) {
                 fan.add(input_.mesh.triangles[g], v, input_.normals.face[g]);
                 continue;
             }
-            for (Index c = split_.first_piece(j); c < split_.first_piece(j + 1); ++c) {
-                const Triangle& t = pieces_[c].id;
-                if (t[0] == v || t[1] == v || t[2] == v) fan.add(t, v, pieces_[c].n);
+            for (Index k = 0; k < split_.piece_count(j); ++k) {
+                const Triangle& t = piece_triangle(j, k);
+                if (t[0] == v || t[1] == v || t[2] == v) {
+                    fan.add(t, v, piece_normal_[split_.first_piece(j) + k]);
+                }
             }
         }
-        return fan;
     }
 
-    /// Per new vertex (output vertex #V in + i): the pieces that hold it, pieces[first[i]] ..
-    /// pieces[first[i + 1] - 1] (CSR, like Connectivity's rings).
+    /// Per new vertex (output vertex #V in + i): the pieces that hold it, as output faces and
+    /// piece numbers, entries first[i] .. first[i + 1] - 1 (CSR, like Connectivity's rings).
     struct PiecesAround {
-        std::vector<Index> first, pieces;
+        std::vector<Index> first, output, piece;
     };
     PiecesAround pieces_around_new_vertices() const {
         const Index input_vertices = static_cast<Index>(input_.mesh.vertex_count());
         PiecesAround around;
         around.first.assign(output_.mesh.vertex_count() - input_vertices + 1, 0);
-        for (const IdTriangle& piece : pieces_) {
-            for (Index v : piece.id) {
-                if (v >= input_vertices) ++around.first[v - input_vertices + 1];
+        auto for_each_new_corner = [&](auto&& visit) {
+            for (Index i = 0; i < split_.size(); ++i) {
+                if (!described_[i]) continue;
+                for (Index k = 0; k < split_.piece_count(i); ++k) {
+                    for (Index v : piece_triangle(i, k)) {
+                        if (v >= input_vertices) visit(v - input_vertices, i, k);
+                    }
+                }
             }
-        }
-        for (std::size_t i = 1; i < around.first.size(); ++i)
-            around.first[i] += around.first[i - 1];
-        around.pieces.resize(around.first.back());
+        };
+        for_each_new_corner([&](Index n, Index, Index) { ++around.first[n + 1]; });
+        for (std::size_t n = 1; n < around.first.size(); ++n)
+            around.first[n] += around.first[n - 1];
+        around.output.resize(around.first.back());
+        around.piece.resize(around.first.back());
         std::vector<Index> fill(around.first.begin(), around.first.end() - 1);
-        for (Index c = 0; c < pieces_.size(); ++c) {
-            for (Index v : pieces_[c].id) {
-                if (v >= input_vertices) around.pieces[fill[v - input_vertices]++] = c;
-            }
-        }
+        for_each_new_corner([&](Index n, Index i, Index k) {
+            around.output[fill[n]] = split_.first_output(i) + k;
+            around.piece[fill[n]++] = split_.first_piece(i) + k;
+        });
         return around;
     }
 
     /// The three checks on the pieces of split face number i.
     FaceVerdict judge(Index i, Scratch& scratch) const {
         const Index f = split_.face(i);
-        gather_two_rings(f, i, scratch);
-        const double widest = widest_turn(f, scratch.faces);
+        gather_two_rings(f, scratch);
         FaceVerdict verdict;
-        for (Index c = split_.first_piece(i); c < split_.first_piece(i + 1); ++c) {
-            verdict.turned += is_turned(f, pieces_[c], widest, scratch);
-            verdict.folded += is_folded(i, c);
+        const std::array<bool, 6> against = turning_against_some(i, scratch.faces);
+        const bool may_fold = may_fold_anywhere(i);
+        for (Index k = 0; k < split_.piece_count(i); ++k) {
+            const Index c = split_.first_piece(i) + k;
+            if (against[k]) verdict.turned += is_turned(f, piece_triangle(i, k), c, scratch);
+            if (may_fold) verdict.folded += is_folded(i, k);
         }
         if (check_crossings_) verdict.crossing += count_crossing_pieces(i, scratch.faces);
         return verdict;
@@ -451,23 +442,25 @@ private:
     /// Lists in scratch.faces the input faces within two rings of f: the faces around the
     /// vertices of the faces around f's vertices. Gathering those vertices first visits each
     /// of the ~12 ring vertices' faces once, not each first-ring face's three rings.
-    void gather_two_rings(Index f, Index stamp, Scratch& scratch) const {
+    void gather_two_rings(Index f, Scratch& scratch) const {
+        for (Index u : scratch.vertices) scratch.vertex_mark[u] = 0;
+        for (Index g : scratch.faces) scratch.face_mark[g] = 0;
         scratch.vertices.clear();
         scratch.faces.clear();
         scratch.boxes.clear();
         for (Index v : input_.mesh.triangles[f]) {
             for (Index g : input_.connectivity.faces_around(v)) {
                 for (Index u : input_.mesh.triangles[g]) {
-                    if (scratch.vertex_mark[u] == stamp) continue;
-                    scratch.vertex_mark[u] = stamp;
+                    if (scratch.vertex_mark[u]) continue;
+                    scratch.vertex_mark[u] = 1;
                     scratch.vertices.push_back(u);
                 }
             }
         }
         for (Index u : scratch.vertices) {
             for (Index g : input_.connectivity.faces_around(u)) {
-                if (scratch.face_mark[g] == stamp) continue;
-                scratch.face_mark[g] = stamp;
+                if (scratch.face_mark[g]) continue;
+                scratch.face_mark[g] = 1;
                 scratch.faces.push_back(g);
             }
         }
@@ -483,20 +476,39 @@ private:
         }
     }
 
-    /// The cosine of the widest angle between f's normal and a candidate's: every candidate's
-    /// normal lies in the cone of that angle around f's.
-    double widest_turn(Index f, const std::vector<Index>& candidates) const {
-        const Vec3& n = input_.normals.face[f];
-        double widest = 1.0;
+    /// Per piece of split face number i: whether it turns against one of the candidates (or
+    /// has no area), the only case (a) has anything to measure. A piece within 90 degrees of
+    /// every candidate's normal by the cone bound (turns_against_none()) needs no look at them.
+    std::array<bool, 6> turning_against_some(Index i, const std::vector<Index>& candidates) const {
+        const Vec3& n = input_.normals.face[split_.face(i)];
+        const Index first = split_.first_piece(i), count = split_.piece_count(i);
+        double widest = 1.0;  // the cosine of the widest angle between n and a candidate's
         for (Index g : candidates) widest = std::min(widest, n.dot(input_.normals.face[g]));
-        return widest;
+        std::array<bool, 6> against{};
+        bool any = false;
+        for (Index k = 0; k < count; ++k) {
+            const Vec3& m = piece_normal_[first + k];
+            against[k] = m.isZero(0.0) || !turns_against_none(m.dot(n), widest);
+            any |= against[k];
+        }
+        if (!any) return against;
+        std::array<bool, 6> found{};
+        for (Index g : candidates) {
+            for (Index k = 0; k < count; ++k) {
+                found[k] |= turns_against(piece_normal_[first + k], g);
+            }
+        }
+        for (Index k = 0; k < count; ++k) {
+            against[k] = against[k] && (found[k] || piece_normal_[first + k].isZero(0.0));
+        }
+        return against;
     }
 
-    /// Whether unit normal n, at an angle of cosine `cosine` from f's normal, turns against
-    /// none of the candidates, whose normals lie within an angle of cosine `widest` from it:
-    /// the angle between n and any of them is at most the sum of the two (the triangle
-    /// inequality on the sphere), whose cosine is cosine * widest - sines. The slack covers
-    /// the rounding of unit normals.
+    /// Whether unit normal n, at an angle of cosine `cosine` from the face's normal, turns
+    /// against none of the candidates, whose normals lie within an angle of cosine `widest`
+    /// from it: the angle between n and any of them is at most the sum of the two (the
+    /// triangle inequality on the sphere), whose cosine is cosine * widest - sines. The slack
+    /// covers the rounding of unit normals.
     static bool turns_against_none(double cosine, double widest) {
         if (!(cosine > 0.0 && widest > 0.0)) return false;
         const double sines = std::sqrt(std::max(0.0, 1.0 - cosine * cosine)) *
@@ -504,21 +516,13 @@ private:
         return cosine * widest - sines > -kRightAngleMargin + 1e-12;
     }
 
-    /// (a) Whether a piece of split face f turns more than 90 degrees against all the input
-    /// faces nearest one of its query points (its vertices and centroid; ties go to the piece),
-    /// or has no area. Only faces it turns against can be the reason, so where it turns
-    /// against none of the candidates (first bounded by `widest`, see widest_turn()) there is
-    /// nothing to measure.
-    bool is_turned(Index f, const IdTriangle& piece, double widest, Scratch& candidates) const {
-        const Vec3& n = piece.n;
+    /// (a) Whether piece t (number c) of split face f turns more than 90 degrees against all
+    /// the input faces nearest one of its query points (its vertices and centroid; ties go to
+    /// the piece), or has no area. Called for the pieces that turn against some candidate.
+    bool is_turned(Index f, const Triangle& t, Index c, Scratch& candidates) const {
+        const Vec3& n = piece_normal_[c];
         if (n.isZero(0.0)) return true;
-        if (turns_against_none(n.dot(input_.normals.face[f]), widest)) return false;
-        const bool turns_against_some =
-            std::any_of(candidates.faces.begin(), candidates.faces.end(),
-                        [&](Index g) { return turns_against(n, g); });
-        if (!turns_against_some) return false;
         ensure_boxes(candidates);
-        const Triangle& t = piece.id;
         const auto& x = output_.mesh.positions;
         for (Index v : t) {
             if (v < input_.mesh.vertex_count() ? turned_at_input_vertex(v, n)
@@ -553,8 +557,9 @@ private:
         double against = kInfinity;
         for (std::size_t j = 0; j < candidates.faces.size(); ++j) {
             const Index g = candidates.faces[j];
-            if (!turns_against(n, g) || least_distance_squared(q, candidates.boxes[j]) >= other)
+            if (!turns_against(n, g) || least_distance_squared(q, candidates.boxes[j]) >= other) {
                 continue;
+            }
             against = std::min(against, distance_squared(q, g));
         }
         if (!(against < other)) return false;
@@ -581,16 +586,40 @@ private:
         return squared_distance_to_triangle(q, x[t[0]], x[t[1]], x[t[2]]);
     }
 
-    /// (b) Whether piece c of split face number i folds onto an output face across one of its
+    /// Whether a piece of split face number i may fold onto an output face across one of its
+    /// edges (the pieces of i and the output faces of the faces across i's edges). Where all
+    /// their normals lie within half the fold angle of the face's, no two differ by the fold
+    /// angle (the triangle inequality on the sphere); the slack covers rounding.
+    bool may_fold_anywhere(Index i) const {
+        const Index f = split_.face(i);
+        const Vec3& n = input_.normals.face[f];
+        auto within = [&](const Vec3& m) { return n.dot(m) > half_fold_cosine_ + 1e-12; };
+        auto all_within = [&](Index g) {
+            const Index j = split_.number(g);
+            if (j == kNoIndex) return within(input_.normals.face[g]);
+            for (Index c = split_.first_piece(j); c < split_.first_piece(j + 1); ++c) {
+                if (!within(piece_normal_[c])) return false;
+            }
+            return true;
+        };
+        if (!all_within(f)) return true;
+        for (Index k = 0; k < 3; ++k) {
+            const Index twin = input_.connectivity.twin[3 * f + k];
+            if (twin != kNoIndex && !all_within(face_of(twin))) return true;
+        }
+        return false;
+    }
+
+    /// (b) Whether piece k of split face number i folds onto an output face across one of its
     /// edges: their normals differ by more than the fold angle where the input faces they
     /// replace did not (a piece and its own face's pieces replace one face).
-    bool is_folded(Index i, Index c) const {
+    bool is_folded(Index i, Index k) const {
         const Index f = split_.face(i);
-        const IdTriangle& piece = pieces_[c];
-        for (int k = 0; k < 3; ++k) {
-            const std::optional<Across> across =
-                face_across(i, c, piece.id[(k + 1) % 3], piece.id[k]);
-            if (!across || piece.n.dot(*across->normal) >= min_fold_cosine_) continue;
+        const Index c = split_.first_piece(i) + k;
+        const Triangle& t = piece_triangle(i, k);
+        for (int e = 0; e < 3; ++e) {
+            const std::optional<Across> across = face_across(i, c, t[(e + 1) % 3], t[e]);
+            if (!across || piece_normal_[c].dot(*across->normal) >= min_fold_cosine_) continue;
             const Index g = across->source;
             const bool input_folded =
                 g != f && input_.normals.face[f].dot(input_.normals.face[g]) < min_fold_cosine_;
@@ -618,8 +647,11 @@ private:
                 if (holds(input_.mesh.triangles[g])) return Across{g, &input_.normals.face[g]};
                 return std::nullopt;
             }
-            for (Index other = split_.first_piece(j); other < split_.first_piece(j + 1); ++other) {
-                if (other != c && holds(pieces_[other].id)) return Across{g, &pieces_[other].n};
+            for (Index k = 0; k < split_.piece_count(j); ++k) {
+                const Index other = split_.first_piece(j) + k;
+                if (other != c && holds(piece_triangle(j, k))) {
+                    return Across{g, &piece_normal_[other]};
+                }
             }
             return std::nullopt;
         };
@@ -633,79 +665,75 @@ private:
     }
 
     /// (c) How many pieces of split face number i meet another of its pieces or an output face
-    /// of an input face within two rings (the candidates) whose box meets theirs. A split face
-    /// before it already checked its pieces against these (the relation is symmetric); a
-    /// crossing with another split face blames it too. Faces wholly beyond the face's cap
-    /// plane (see cap_of) cannot reach its pieces; which pairs need a test, may_meet says.
+    /// of an input face within two rings (the candidates) whose box meets theirs. A judged
+    /// split face before it already checked its pieces against these (the relation is
+    /// symmetric); a crossing with another split face blames it too. Faces wholly beyond the
+    /// face's cap plane (see cap_of) cannot reach its pieces; which pairs need a test, may_meet
+    /// says.
     std::uint32_t count_crossing_pieces(Index i, const std::vector<Index>& candidates) const {
         const Index f = split_.face(i);
-        const Box3& box = split_boxes_[i];
+        const Index count = split_.piece_count(i);
+        std::array<std::optional<Shape>, 6> own;
+        Box3 box;
+        for (Index k = 0; k < count; ++k) box.extend(own[k].emplace(piece_shape(i, k)).box);
         const double tolerance = kTouchRatio * std::sqrt(box.sizes().squaredNorm());
-        const Index own = split_.first_piece(i);
-        const int count = static_cast<int>(split_.piece_count(i));
         std::array<bool, 6> meets{};
-        for (int a = 0; a < count; ++a) {
-            for (int b = a + 1; b < count; ++b) {
-                if (may_meet(own + a, piece(own + b), tolerance)) meets[a] = meets[b] = true;
+        for (Index a = 0; a < count; ++a) {
+            for (Index b = a + 1; b < count; ++b) {
+                if (may_meet(*own[a], *own[b], tolerance)) meets[a] = meets[b] = true;
             }
         }
-        auto test_against = [&](const Opponent& other) {
+        auto test_against = [&](const Shape& other) {
             bool met = false;
-            for (int a = 0; a < count; ++a) {
-                if (!may_meet(own + a, other, tolerance)) continue;
+            for (Index a = 0; a < count; ++a) {
+                if (!may_meet(*own[a], other, tolerance)) continue;
                 meets[a] = true;
                 met = true;
             }
             return met;
         };
-        const Cap cap = cap_of(i, tolerance);
+        const Cap cap = cap_of(i, own, tolerance);
+        const auto& x = input_.mesh.positions;
         for (Index g : candidates) {
             if (g == f) continue;
             const Index j = split_.number(g);
-            if (j != kNoIndex) {
-                // A judged split face before f tested this pair already.
-                if ((g < f && judged_[j]) || !split_boxes_[j].intersects(box)) continue;
-                bool met = false;
-                for (Index c = split_.first_piece(j); c < split_.first_piece(j + 1); ++c) {
-                    met |= test_against(piece(c));
-                }
-                if (met)
-                    std::atomic_ref<std::uint8_t>(blamed_[j]).store(1, std::memory_order_relaxed);
+            if (j == kNoIndex) {
+                const Shape whole(input_.mesh.triangles[g], x, input_.normals.face[g]);
+                if (whole.box.intersects(box) && !lies_beyond(cap, f, g)) test_against(whole);
                 continue;
             }
-            const Triangle& t = input_.mesh.triangles[g];
-            const auto& x = input_.mesh.positions;
-            Box3 whole_box(x[t[0]]);
-            whole_box.extend(x[t[1]]).extend(x[t[2]]);
-            if (!whole_box.intersects(box) || lies_beyond(cap, f, g)) continue;
-            const IdTriangle whole =
-                IdTriangle::make(t, x[t[0]], x[t[1]], x[t[2]], input_.normals.face[g]);
-            test_against(Opponent(whole, nullptr));
+            if (g < f && judged_[j]) continue;  // tested when g was judged
+            std::array<std::optional<Shape>, 6> theirs;
+            Box3 their_box;
+            for (Index k = 0; k < split_.piece_count(j); ++k) {
+                their_box.extend(theirs[k].emplace(piece_shape(j, k)).box);
+            }
+            if (!their_box.intersects(box)) continue;
+            bool met = false;
+            for (Index k = 0; k < split_.piece_count(j); ++k) met |= test_against(*theirs[k]);
+            if (met) std::atomic_ref<std::uint8_t>(blamed_[j]).store(1, std::memory_order_relaxed);
         }
         return static_cast<std::uint32_t>(std::count(meets.begin(), meets.begin() + count, true));
     }
 
-    Opponent piece(Index c) const { return Opponent(pieces_[c], &piece_planes_[c]); }
-
-    /// Whether piece number c and output face t need the intersection test and meet by it.
-    /// They need none if their boxes lie apart; if they share an edge (the fold check's); if
-    /// they share only a vertex around which the output is a simple fan, for there they meet
-    /// nowhere else (is_simple_fan()); or if they share nothing and a plane through an edge of
-    /// one, holding its normal, leaves the other more than the tolerance beyond (the
+    /// Whether piece s and output face t need the intersection test and meet by it. They need
+    /// none if their boxes lie apart; if they share an edge (the fold check's); if they share
+    /// only a vertex around which the output is a simple fan, for there they meet nowhere else
+    /// (is_simple_fan()); or if they share nothing and a plane through an edge of one, holding
+    /// its normal, leaves the other more than the tolerance beyond (parted_by_an_edge(): the
     /// separating axes of two triangles that triangles_meet() tries last, as segment tests).
     /// The fan certificate replaces, for its pairs, the test's tolerance by exact sectors: it
     /// proves they do not cross, not that they keep the tolerance apart.
-    bool may_meet(Index c, const Opponent& t, double tolerance) const {
-        const IdTriangle& s = pieces_[c];
-        if (boxes_apart(s.box, t.triangle().box, tolerance)) return false;
-        const Sharing shared = sharing_of(s.id, t.triangle().id);
+    bool may_meet(const Shape& s, const Shape& t, double tolerance) const {
+        if (boxes_apart(s.box, t.box, tolerance)) return false;
+        const Sharing shared = sharing_of(s.id, t.id);
         if (shared.opposite_edge) return false;
         if (shared.count == 1 && simple_fan_[shared.vertex]) return false;
         if (shared.count == 0 &&
-            (t.planes().part(s, tolerance) || piece_planes_[c].part(t.triangle(), tolerance))) {
+            (parted_by_an_edge(t, s, tolerance) || parted_by_an_edge(s, t, tolerance))) {
             return false;
         }
-        return triangles_meet(s, t.triangle(), tolerance);
+        return triangles_meet(s.exact(), t.exact(), tolerance);
     }
 
     /// A half-space holding every piece of a split face: n . x >= offset (if `holds`).
@@ -716,18 +744,18 @@ private:
         bool holds = false;
     };
 
-    /// The plane of split face number i, turned to the side of the vertices its pieces add,
-    /// when they all lie clearly on one side: the pieces lie in the hull of the face and those
-    /// vertices.
-    Cap cap_of(Index i, double tolerance) const {
+    /// The plane of split face number i, turned to the side of the vertices its pieces (`own`)
+    /// add, when they all lie clearly on one side: the pieces lie in the hull of the face and
+    /// those vertices.
+    Cap cap_of(Index i, const std::array<std::optional<Shape>, 6>& own, double tolerance) const {
         const Index f = split_.face(i);
         const Vec3& n = input_.normals.face[f];
         const double offset = n.dot(input_.mesh.positions[input_.mesh.triangles[f][0]]);
         int above = 0, below = 0, added = 0;
-        for (Index c = split_.first_piece(i); c < split_.first_piece(i + 1); ++c) {
-            for (int k = 0; k < 3; ++k) {
-                if (pieces_[c].id[k] < input_.mesh.vertex_count()) continue;
-                const double height = n.dot(pieces_[c].p[k]) - offset;
+        for (Index k = 0; k < split_.piece_count(i); ++k) {
+            for (int m = 0; m < 3; ++m) {
+                if (own[k]->id[m] < input_.mesh.vertex_count()) continue;
+                const double height = n.dot(*own[k]->p[m]) - offset;
                 above += height > tolerance;
                 below += height < -tolerance;
                 ++added;
@@ -752,16 +780,15 @@ private:
     const InputSurface& input_;
     const SplitMesh& output_;
     double min_fold_cosine_;
+    double half_fold_cosine_;  ///< of half the fold angle
     bool check_crossings_;
     SplitFaces split_;
-    std::vector<IdTriangle> pieces_;        ///< per piece (numbered as SplitFaces numbers them)
-    std::vector<EdgePlanes> piece_planes_;  ///< per piece, with the crossing check
-    std::vector<std::uint8_t> judged_;      ///< per split face: judged by this check
-    std::vector<std::uint8_t> described_;   ///< per split face: its pieces described
-    std::vector<Index> judged_list_;        ///< the judged split faces, ascending
-    std::vector<Box3> split_boxes_;         ///< per split face: the box of its pieces
+    std::vector<Vec3> piece_normal_;       ///< per piece (numbered as SplitFaces numbers them)
+    std::vector<std::uint8_t> judged_;     ///< per split face: judged by this check
+    std::vector<std::uint8_t> described_;  ///< per split face: its pieces' normals made
+    std::vector<Index> judged_list_;       ///< the judged split faces, ascending
     /// Per output vertex (#V out), with the crossing check: 1 where is_simple_fan() holds (only
-    /// vertices of split faces are looked at).
+    /// vertices of judged split faces are looked at).
     std::vector<std::uint8_t> simple_fan_;
     mutable std::vector<std::uint8_t> blamed_;  ///< per split face, set from any thread
 };
