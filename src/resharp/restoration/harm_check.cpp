@@ -200,6 +200,7 @@ struct Scratch {
     std::vector<std::uint8_t> vertex_mark, face_mark;
     std::vector<Index> vertices, faces;
     std::vector<Box3> boxes;
+    std::vector<double> normal_x, normal_y, normal_z;  ///< of the faces, by coordinate
     Scratch(std::size_t vertex_count, std::size_t face_count)
         : vertex_mark(vertex_count, 0), face_mark(face_count, 0) {}
 };
@@ -260,6 +261,7 @@ public:
           check_crossings_(options.check_crossings),
           split_(output, input.mesh.face_count()),
           piece_normal_(split_.piece_count()),
+          split_box_(split_.size()),
           blamed_(split_.size(), 0) {
         choose_judged(changed);
         describe_pieces();
@@ -331,16 +333,20 @@ private:
         return near;
     }
 
-    /// The unit normal of every described piece (zero for a degenerate one).
+    /// The unit normal of every described piece (zero for a degenerate one), and the box of
+    /// every described split face's pieces.
     void describe_pieces() {
         const auto& x = output_.mesh.positions;
         tbb::parallel_for(Index{0}, static_cast<Index>(split_.size()), [&](Index i) {
             if (!described_[i]) return;
+            Box3 box;
             for (Index k = 0; k < split_.piece_count(i); ++k) {
                 const Triangle& t = piece_triangle(i, k);
                 piece_normal_[split_.first_piece(i) + k] =
                     triangle_normal(x[t[0]], x[t[1]], x[t[2]]);
+                box.extend(x[t[0]]).extend(x[t[1]]).extend(x[t[2]]);
             }
+            split_box_[i] = box;
         });
     }
 
@@ -428,7 +434,7 @@ private:
         const Index f = split_.face(i);
         gather_two_rings(f, scratch);
         FaceVerdict verdict;
-        const std::array<bool, 6> against = turning_against_some(i, scratch.faces);
+        const std::array<bool, 6> against = turning_against_some(i, scratch);
         const bool may_fold = may_fold_anywhere(i);
         for (Index k = 0; k < split_.piece_count(i); ++k) {
             const Index c = split_.first_piece(i) + k;
@@ -477,43 +483,31 @@ private:
     }
 
     /// Per piece of split face number i: whether it turns against one of the candidates (or
-    /// has no area), the only case (a) has anything to measure. A piece within 90 degrees of
-    /// every candidate's normal by the cone bound (turns_against_none()) needs no look at them.
-    std::array<bool, 6> turning_against_some(Index i, const std::vector<Index>& candidates) const {
-        const Vec3& n = input_.normals.face[split_.face(i)];
-        const Index first = split_.first_piece(i), count = split_.piece_count(i);
-        double widest = 1.0;  // the cosine of the widest angle between n and a candidate's
-        for (Index g : candidates) widest = std::min(widest, n.dot(input_.normals.face[g]));
+    /// has no area), the only case (a) has anything to measure. The candidates' normals are
+    /// laid out by coordinate first, so that the test of each piece runs down three arrays in
+    /// vector registers (turns_against(), summed in the same order as Vec3::dot).
+    std::array<bool, 6> turning_against_some(Index i, Scratch& scratch) const {
+        const std::size_t n = scratch.faces.size();
+        scratch.normal_x.resize(n);
+        scratch.normal_y.resize(n);
+        scratch.normal_z.resize(n);
+        for (std::size_t j = 0; j < n; ++j) {
+            const Vec3& normal = input_.normals.face[scratch.faces[j]];
+            scratch.normal_x[j] = normal.x();
+            scratch.normal_y[j] = normal.y();
+            scratch.normal_z[j] = normal.z();
+        }
+        using Column = Eigen::Map<const Eigen::ArrayXd>;
+        const Column nx(scratch.normal_x.data(), static_cast<Eigen::Index>(n));
+        const Column ny(scratch.normal_y.data(), static_cast<Eigen::Index>(n));
+        const Column nz(scratch.normal_z.data(), static_cast<Eigen::Index>(n));
         std::array<bool, 6> against{};
-        bool any = false;
-        for (Index k = 0; k < count; ++k) {
-            const Vec3& m = piece_normal_[first + k];
-            against[k] = m.isZero(0.0) || !turns_against_none(m.dot(n), widest);
-            any |= against[k];
-        }
-        if (!any) return against;
-        std::array<bool, 6> found{};
-        for (Index g : candidates) {
-            for (Index k = 0; k < count; ++k) {
-                found[k] |= turns_against(piece_normal_[first + k], g);
-            }
-        }
-        for (Index k = 0; k < count; ++k) {
-            against[k] = against[k] && (found[k] || piece_normal_[first + k].isZero(0.0));
+        for (Index k = 0; k < split_.piece_count(i); ++k) {
+            const Vec3& m = piece_normal_[split_.first_piece(i) + k];
+            against[k] = m.isZero(0.0) ||
+                         ((nx * m.x() + ny * m.y()) + nz * m.z() < -kRightAngleMargin).any();
         }
         return against;
-    }
-
-    /// Whether unit normal n, at an angle of cosine `cosine` from the face's normal, turns
-    /// against none of the candidates, whose normals lie within an angle of cosine `widest`
-    /// from it: the angle between n and any of them is at most the sum of the two (the
-    /// triangle inequality on the sphere), whose cosine is cosine * widest - sines. The slack
-    /// covers the rounding of unit normals.
-    static bool turns_against_none(double cosine, double widest) {
-        if (!(cosine > 0.0 && widest > 0.0)) return false;
-        const double sines = std::sqrt(std::max(0.0, 1.0 - cosine * cosine)) *
-                             std::sqrt(std::max(0.0, 1.0 - widest * widest));
-        return cosine * widest - sines > -kRightAngleMargin + 1e-12;
     }
 
     /// (a) Whether piece t (number c) of split face f turns more than 90 degrees against all
@@ -702,15 +696,10 @@ private:
                 if (whole.box.intersects(box) && !lies_beyond(cap, f, g)) test_against(whole);
                 continue;
             }
-            if (g < f && judged_[j]) continue;  // tested when g was judged
-            std::array<std::optional<Shape>, 6> theirs;
-            Box3 their_box;
-            for (Index k = 0; k < split_.piece_count(j); ++k) {
-                their_box.extend(theirs[k].emplace(piece_shape(j, k)).box);
-            }
-            if (!their_box.intersects(box)) continue;
+            if ((g < f && judged_[j]) || !split_box_[j].intersects(box)) continue;  // (or tested)
             bool met = false;
-            for (Index k = 0; k < split_.piece_count(j); ++k) met |= test_against(*theirs[k]);
+            for (Index k = 0; k < split_.piece_count(j); ++k)
+                met |= test_against(piece_shape(j, k));
             if (met) std::atomic_ref<std::uint8_t>(blamed_[j]).store(1, std::memory_order_relaxed);
         }
         return static_cast<std::uint32_t>(std::count(meets.begin(), meets.begin() + count, true));
@@ -784,6 +773,7 @@ private:
     bool check_crossings_;
     SplitFaces split_;
     std::vector<Vec3> piece_normal_;       ///< per piece (numbered as SplitFaces numbers them)
+    std::vector<Box3> split_box_;          ///< per split face: the box of its pieces
     std::vector<std::uint8_t> judged_;     ///< per split face: judged by this check
     std::vector<std::uint8_t> described_;  ///< per split face: its pieces' normals made
     std::vector<Index> judged_list_;       ///< the judged split faces, ascending
