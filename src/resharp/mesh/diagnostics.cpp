@@ -27,7 +27,8 @@ std::size_t distinct_edges(const Mesh& mesh, const std::vector<Index>& halfedges
 bool is_nonmanifold_vertex(const Mesh& mesh, const Connectivity& c, Index v) {
     const auto ring = c.faces_around(v);
     if (ring.size() < 2) return false;
-    const Index first = 3 * ring[0] + corner_of(mesh.triangles[ring[0]], v);  // leaves v
+    const Triangle& t = mesh.triangles[ring[0]];
+    const Index first = 3 * ring[0] + (t[0] == v ? 0 : t[1] == v ? 1 : 2);  // leaves v
     std::size_t reached = 1;
     Index h = first;
     for (;;) {  // forwards: across the edge entering v
@@ -48,9 +49,10 @@ bool is_nonmanifold_vertex(const Mesh& mesh, const Connectivity& c, Index v) {
 
 bool is_degenerate_face(const Mesh& mesh, std::size_t f) {
     const Triangle& t = mesh.triangles[f];
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return true;
     const Vec3& a = mesh.positions[t[0]];
-    return t[0] == t[1] || t[1] == t[2] || t[0] == t[2] ||
-           (mesh.positions[t[1]] - a).cross(mesh.positions[t[2]] - a).isZero(0.0);
+    const Vec3 n = (mesh.positions[t[1]] - a).cross(mesh.positions[t[2]] - a);
+    return n.x() == 0.0 && n.y() == 0.0 && n.z() == 0.0;
 }
 
 /// Puts the vertices of face f into one set. An edge whose twin lies in an earlier face needs no

@@ -200,7 +200,9 @@ struct Scratch {
     std::vector<std::uint8_t> vertex_mark, face_mark;
     std::vector<Index> vertices, faces;
     std::vector<Box3> boxes;
-    std::vector<double> normal_x, normal_y, normal_z;  ///< of the faces, by coordinate
+    Eigen::Matrix<double, Eigen::Dynamic, 3> normals;  ///< of the faces, a row each
+    /// per face and piece of the split face judged: the piece turns against the face
+    Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic> against;
     Scratch(std::size_t vertex_count, std::size_t face_count)
         : vertex_mark(vertex_count, 0), face_mark(face_count, 0) {}
 };
@@ -438,7 +440,7 @@ private:
         const bool may_fold = may_fold_anywhere(i);
         for (Index k = 0; k < split_.piece_count(i); ++k) {
             const Index c = split_.first_piece(i) + k;
-            if (against[k]) verdict.turned += is_turned(f, piece_triangle(i, k), c, scratch);
+            if (against[k]) verdict.turned += is_turned(f, piece_triangle(i, k), c, k, scratch);
             if (may_fold) verdict.folded += is_folded(i, k);
         }
         if (check_crossings_) verdict.crossing += count_crossing_pieces(i, scratch.faces);
@@ -483,48 +485,44 @@ private:
     }
 
     /// Per piece of split face number i: whether it turns against one of the candidates (or
-    /// has no area), the only case (a) has anything to measure. The candidates' normals are
-    /// laid out by coordinate first, so that the test of each piece runs down three arrays in
-    /// vector registers (turns_against(), summed in the same order as Vec3::dot).
+    /// has no area), the only case (a) has anything to measure; and in scratch.against, per
+    /// piece and candidate, whether it turns against that one (turns_against()). The
+    /// candidates' normals are laid out by coordinate first, so that each piece's test runs
+    /// down three arrays in vector registers (summed in the same order as Vec3::dot).
     std::array<bool, 6> turning_against_some(Index i, Scratch& scratch) const {
-        const std::size_t n = scratch.faces.size();
-        scratch.normal_x.resize(n);
-        scratch.normal_y.resize(n);
-        scratch.normal_z.resize(n);
-        for (std::size_t j = 0; j < n; ++j) {
-            const Vec3& normal = input_.normals.face[scratch.faces[j]];
-            scratch.normal_x[j] = normal.x();
-            scratch.normal_y[j] = normal.y();
-            scratch.normal_z[j] = normal.z();
+        const auto n = static_cast<Eigen::Index>(scratch.faces.size());
+        scratch.normals.resize(n, 3);
+        for (Eigen::Index j = 0; j < n; ++j) {
+            scratch.normals.row(j) = input_.normals.face[scratch.faces[j]].transpose();
         }
-        using Column = Eigen::Map<const Eigen::ArrayXd>;
-        const Column nx(scratch.normal_x.data(), static_cast<Eigen::Index>(n));
-        const Column ny(scratch.normal_y.data(), static_cast<Eigen::Index>(n));
-        const Column nz(scratch.normal_z.data(), static_cast<Eigen::Index>(n));
-        std::array<bool, 6> against{};
+        scratch.against.resize(n, split_.piece_count(i));
+        std::array<bool, 6> some{};
         for (Index k = 0; k < split_.piece_count(i); ++k) {
             const Vec3& m = piece_normal_[split_.first_piece(i) + k];
-            against[k] = m.isZero(0.0) ||
-                         ((nx * m.x() + ny * m.y()) + nz * m.z() < -kRightAngleMargin).any();
+            scratch.against.col(k) =
+                (scratch.normals.col(0).array() * m.x() + scratch.normals.col(1).array() * m.y()) +
+                    scratch.normals.col(2).array() * m.z() <
+                -kRightAngleMargin;
+            some[k] = m.isZero(0.0) || scratch.against.col(k).any();
         }
-        return against;
+        return some;
     }
 
     /// (a) Whether piece t (number c) of split face f turns more than 90 degrees against all
     /// the input faces nearest one of its query points (its vertices and centroid; ties go to
     /// the piece), or has no area. Called for the pieces that turn against some candidate.
-    bool is_turned(Index f, const Triangle& t, Index c, Scratch& candidates) const {
+    bool is_turned(Index f, const Triangle& t, Index c, Index k, Scratch& candidates) const {
         const Vec3& n = piece_normal_[c];
         if (n.isZero(0.0)) return true;
         ensure_boxes(candidates);
         const auto& x = output_.mesh.positions;
         for (Index v : t) {
             if (v < input_.mesh.vertex_count() ? turned_at_input_vertex(v, n)
-                                               : turned_at_point(x[v], n, f, candidates)) {
+                                               : turned_at_point(x[v], n, f, k, candidates)) {
                 return true;
             }
         }
-        return turned_at_point((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0, n, f, candidates);
+        return turned_at_point((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0, n, f, k, candidates);
     }
 
     /// Whether unit normal n turns more than 90 degrees against input face g. The margin,
@@ -545,22 +543,21 @@ private:
     /// face f first (the nearest, as a rule, and almost never turned against), then the faces
     /// turned against that may come nearer than f, then, only if one did, the other faces
     /// that may come as near as it. The distance to a face's box skips the faces that cannot.
-    bool turned_at_point(const Vec3& q, const Vec3& n, Index f, const Scratch& candidates) const {
+    /// (k: the piece's column in candidates.against.)
+    bool turned_at_point(const Vec3& q, const Vec3& n, Index f, Index k,
+                         const Scratch& candidates) const {
         constexpr double kInfinity = std::numeric_limits<double>::infinity();
         const double other = turns_against(n, f) ? kInfinity : distance_squared(q, f);
         double against = kInfinity;
+        const auto turned = candidates.against.col(k);
         for (std::size_t j = 0; j < candidates.faces.size(); ++j) {
-            const Index g = candidates.faces[j];
-            if (!turns_against(n, g) || least_distance_squared(q, candidates.boxes[j]) >= other) {
-                continue;
-            }
-            against = std::min(against, distance_squared(q, g));
+            if (!turned(j) || least_distance_squared(q, candidates.boxes[j]) >= other) continue;
+            against = std::min(against, distance_squared(q, candidates.faces[j]));
         }
         if (!(against < other)) return false;
         for (std::size_t j = 0; j < candidates.faces.size(); ++j) {
             const Index g = candidates.faces[j];
-            if (g == f || turns_against(n, g) ||
-                least_distance_squared(q, candidates.boxes[j]) > against) {
+            if (g == f || turned(j) || least_distance_squared(q, candidates.boxes[j]) > against) {
                 continue;
             }
             if (distance_squared(q, g) <= against) return false;
