@@ -185,7 +185,10 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
     for (int round = 0; round < options.max_harm_rounds; ++round) {
         GuardedPoints guarded;
         clock.run(Stage::Guard, [&] {
-            guarded = guard_points(input, feature_normals, r.points, withdrawn, options.guard);
+            // Nothing is withdrawn before the first check: no flags to read.
+            const std::span<const std::uint8_t> out =
+                round == 0 ? std::span<const std::uint8_t>{} : std::span(withdrawn);
+            guarded = guard_points(input, feature_normals, r.points, out, options.guard);
         });
         r.guard.refused_by_quality += guarded.report.refused_by_quality;
         r.guard.refused_by_guard += guarded.report.refused_by_guard;
