@@ -19,21 +19,28 @@ FaceKey reversed(const FaceKey& k) { return {k[0], k[2], k[1]}; }
 
 bool has_repeated_vertex(const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[0] == t[2]; }
 
+/// The defective kinds (non-manifold, inconsistent) are the two with this bit, so one test
+/// covers a face's three edges.
+constexpr unsigned kDefectiveBit = 2;
+static_assert(static_cast<unsigned>(EdgeKind::Manifold) == 0 &&
+              static_cast<unsigned>(EdgeKind::Boundary) == 1 &&
+              static_cast<unsigned>(EdgeKind::NonManifold) == 2 &&
+              static_cast<unsigned>(EdgeKind::Inconsistent) == 3);
+
 bool has_defective_edge(const Connectivity& c, Index f) {
-    for (Index k = 0; k < 3; ++k) {
-        const EdgeKind kind = c.edge_kind[3 * f + k];
-        if (kind == EdgeKind::NonManifold || kind == EdgeKind::Inconsistent) return true;
-    }
-    return false;
+    const unsigned kinds = static_cast<unsigned>(c.edge_kind[3 * f]) |
+                           static_cast<unsigned>(c.edge_kind[3 * f + 1]) |
+                           static_cast<unsigned>(c.edge_kind[3 * f + 2]);
+    return (kinds & kDefectiveBit) != 0;
 }
 
 /// Whether face f's three half-edges all have their twin in one later face: on manifold
 /// edges, the only way two faces can be opposite (counted once, from the earlier face).
 bool starts_manifold_opposite_pair(const Connectivity& c, Index f) {
-    const Index t0 = c.twin[3 * f], t1 = c.twin[3 * f + 1], t2 = c.twin[3 * f + 2];
-    if (t0 == kNoIndex || t1 == kNoIndex || t2 == kNoIndex) return false;
-    const Index g = face_of(t0);
-    return g > f && face_of(t1) == g && face_of(t2) == g;
+    const Index t0 = c.twin[3 * f];
+    if (t0 == kNoIndex || face_of(t0) <= f) return false;  // most faces stop here
+    const Index g = face_of(t0), t1 = c.twin[3 * f + 1], t2 = c.twin[3 * f + 2];
+    return t1 != kNoIndex && t2 != kNoIndex && face_of(t1) == g && face_of(t2) == g;
 }
 
 }  // namespace
