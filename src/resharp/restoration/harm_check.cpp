@@ -15,6 +15,7 @@
 #include "resharp/core/errors.h"
 #include "resharp/mesh/geometry.h"
 #include "resharp/restoration/clearance.h"
+#include "resharp/restoration/simple_fan.h"
 
 namespace resharp {
 namespace {
@@ -25,18 +26,6 @@ constexpr double kTouchRatio = 1e-9;
 
 /// Cosine below -this is a turn of more than 90 degrees (about 90.0001): see turns_against().
 constexpr double kRightAngleMargin = 1e-6;
-
-/// A fan face must face its fan's axis by at least this cosine to count as seen from the front
-/// (about 89.9999 degrees): far above the rounding of a unit normal, so that the sign of its
-/// turn about the axis is certain (see is_simple_fan()).
-constexpr double kFrontCosine = 1e-6;
-
-/// A fan edge must stand off the counting line by at least this share of its length for its
-/// side of the line to be certain (see is_simple_fan()).
-constexpr double kOffLineRatio = 1e-9;
-
-/// Fans of more faces than this are left to the pairwise test (grid meshes have 4 to 12).
-constexpr std::size_t kMaxFan = 16;
 
 /// What two triangles share: how many vertices, one of them, and whether one holds an edge of
 /// the other the other way round (faces sharing an edge meet beyond it only by folding onto
@@ -98,85 +87,6 @@ bool parted_by_an_edge(const Shape& a, const Shape& b, double tolerance) {
         if (beyond(b.p[0]) && beyond(b.p[1]) && beyond(b.p[2])) return true;
     }
     return false;
-}
-
-/// One face around a vertex (the apex): the vertices after and before the apex in the face's
-/// counter-clockwise order, and its unit normal.
-struct Wedge {
-    Index next = kNoIndex, prev = kNoIndex;
-    const Vec3* normal = nullptr;
-};
-
-/// The faces around a vertex, at most kMaxFan; `overflow` when there were more.
-struct Fan {
-    std::array<Wedge, kMaxFan> wedges;
-    std::size_t size = 0;
-    bool overflow = false;
-
-    void add(const Triangle& t, Index apex, const Vec3& normal) {
-        if (size == kMaxFan) {
-            overflow = true;
-            return;
-        }
-        const int k = t[0] == apex ? 0 : t[1] == apex ? 1 : 2;
-        wedges[size++] = {t[(k + 1) % 3], t[(k + 2) % 3], &normal};
-    }
-};
-
-/// Whether the faces around `apex` form one simple fan: a closed disc that, seen along the sum
-/// of their normals (the axis), turns once around the apex with every face turning forwards.
-/// Then the faces, seen along the axis, lie in angular sectors around the apex that overlap
-/// nowhere, so two of them that share only the apex meet nowhere else.
-///
-/// Why the checks prove it. Every face faces the axis (cosine above kFrontCosine), so seen
-/// along it each face turns forwards (counter-clockwise) from its `next` side to its `prev`
-/// side, by less than half a turn. Every `prev` is exactly one face's `next`, and no face
-/// follows two, so following them is a permutation: the faces chain into closed cycles, each
-/// turning a whole number of times (at least once) around the apex. Counting
-/// the faces that cross one line from the apex (from its right side to its left) counts those
-/// turns; one crossing leaves one cycle turning once. The sides are
-/// computed once per edge, so the count is consistent, and edges nearer the line than
-/// kOffLineRatio of their length are refused, so rounding cannot misplace one.
-bool is_simple_fan(const std::vector<Vec3>& x, Index apex, const Fan& fan) {
-    if (fan.overflow || fan.size < 3) return false;
-    const std::span<const Wedge> wedges(fan.wedges.data(), fan.size);
-    Vec3 axis = Vec3::Zero();
-    for (const Wedge& w : wedges) axis += *w.normal;
-    const double length = axis.norm();
-    if (!(length > 0.0)) return false;
-    axis /= length;
-    for (const Wedge& w : wedges) {
-        if (!(w.normal->dot(axis) > kFrontCosine)) return false;
-    }
-    // A direction across the counting line, perpendicular to the axis. Made from a direction
-    // of no symmetry of the grid, not from a coordinate axis: grid meshes have many edges along
-    // the axes, which would lie on the line.
-    const Vec3 generic_a(0.267, 0.534, 0.802), generic_b(0.802, -0.267, 0.534);
-    const Vec3& off =
-        std::abs(axis.dot(generic_a)) < std::abs(axis.dot(generic_b)) ? generic_a : generic_b;
-    const Vec3 across = axis.cross(off).normalized();
-    std::array<bool, kMaxFan> left{};  // per wedge: its `next` edge lies left of the line
-    for (std::size_t i = 0; i < wedges.size(); ++i) {
-        const Vec3 edge = x[wedges[i].next] - x[apex];
-        const double side = edge.dot(across);
-        if (side * side <= kOffLineRatio * kOffLineRatio * edge.squaredNorm()) return false;
-        left[i] = side > 0.0;
-    }
-    int crossings = 0;
-    std::array<bool, kMaxFan> followed{};  // per wedge: it is some wedge's follower
-    for (std::size_t i = 0; i < wedges.size(); ++i) {
-        int followers = 0;  // wedges whose `next` edge is this one's `prev` edge
-        std::size_t follower = 0;
-        for (std::size_t j = 0; j < wedges.size(); ++j) {
-            if (wedges[j].next != wedges[i].prev) continue;
-            ++followers;
-            follower = j;
-        }
-        if (followers != 1 || followed[follower]) return false;
-        followed[follower] = true;
-        crossings += !left[i] && left[follower];
-    }
-    return crossings == 1;
 }
 
 /// Whether two boxes lie more than `tolerance` apart along one of the axes (then the boxes,
