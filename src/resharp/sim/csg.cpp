@@ -390,22 +390,22 @@ void check_shape(const Shape& shape) {
     std::visit(
         Overloaded{[](const BoxShape& b) {
                        if (!(b.min.array() < b.max.array()).all()) {
-                           throw InvalidInput("box: min must be below max on every axis");
+                           throw InvalidInput("a box needs min below max on every axis");
                        }
                    },
                    [](const ConeShape& c) {
-                       if (!(c.length > 0.0)) throw InvalidInput("length must be positive");
+                       if (!(c.length > 0.0)) throw InvalidInput("a cone or cylinder needs a positive length");
                        if (!(c.radius_bottom >= 0.0 && c.radius_top >= 0.0) ||
                            !(c.radius_bottom > 0.0 || c.radius_top > 0.0)) {
-                           throw InvalidInput("radii must not be negative and not both zero");
+                           throw InvalidInput("a cone's radii must not be negative nor both zero");
                        }
                    },
                    [](const SphereShape& s) {
-                       if (!(s.radius > 0.0)) throw InvalidInput("radius must be positive");
+                       if (!(s.radius > 0.0)) throw InvalidInput("a sphere needs a positive radius");
                    },
                    [](const TorusShape& t) {
                        if (!(t.minor > 0.0) || !(t.major > t.minor)) {
-                           throw InvalidInput("torus: need major > minor > 0");
+                           throw InvalidInput("a torus needs major > minor > 0");
                        }
                    },
                    [](const HalfSpaceShape&) {}},
