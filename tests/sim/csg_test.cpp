@@ -166,6 +166,23 @@ TEST(Csg, IntersectionWithAHalfSpaceCutsAChamfer) {
     EXPECT_NEAR(s.bounds().max().x(), 1.0, 0.0);
 }
 
+TEST(Csg, HalfSpacesCutTheBoundingBox) {
+    // The half-space z >= 1 (outward normal -z): a ball's cap with it, a cube's lower half
+    // without it.
+    const Placement above_one = {
+        Eigen::Quaterniond::FromTwoVectors(Vec3::UnitZ(), -Vec3::UnitZ()).toRotationMatrix(),
+        Vec3(0, 0, 1)};
+    const CsgSolid cap(operation(CsgOp::Intersection,
+                                 {shape(SphereShape{2}), shape(HalfSpaceShape{}, above_one)}));
+    EXPECT_NEAR(cap.bounds().min().z(), 1.0, 1e-12);
+    EXPECT_NEAR(cap.bounds().max().z(), 2.0, 1e-12);
+    EXPECT_NEAR(cap.bounds().max().x(), 2.0, 1e-12);  // the cut box, not the cap's rim
+    const CsgSolid half(operation(CsgOp::Difference, {shape(BoxShape{Vec3::Zero(), Vec3(2, 2, 2)}),
+                                                      shape(HalfSpaceShape{}, above_one)}));
+    EXPECT_NEAR(half.bounds().max().z(), 1.0, 1e-12);
+    EXPECT_NEAR(half.bounds().max().x(), 2.0, 1e-12);
+}
+
 TEST(Csg, ContainsAgreesWithTheIntervals) {
     const CsgSolid s(operation(
         CsgOp::Difference,

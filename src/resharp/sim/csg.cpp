@@ -285,6 +285,27 @@ Box3 shape_bounds(const Shape& shape, const Placement& f) {
         shape);
 }
 
+/// The box of the part of `box` with n . x <= offset: its corners on that side and the points
+/// where its edges cross the plane.
+Box3 clip_box(const Box3& box, const Vec3& n, double offset) {
+    if (box.isEmpty() || !box.min().allFinite() || !box.max().allFinite()) return box;
+    Box3 clipped;
+    for (int k = 0; k < 8; ++k) {
+        const Vec3 corner = box.corner(static_cast<Box3::CornerType>(k));
+        const double side = n.dot(corner) - offset;
+        if (side <= 0.0) clipped.extend(corner);
+        for (int a = 0; a < 3; ++a) {
+            if (k & (1 << a)) continue;  // each edge once, from its lower corner
+            const Vec3 other = box.corner(static_cast<Box3::CornerType>(k | (1 << a)));
+            const double other_side = n.dot(other) - offset;
+            if ((side < 0.0) != (other_side < 0.0)) {
+                clipped.extend(corner + side / (side - other_side) * (other - corner));
+            }
+        }
+    }
+    return clipped;
+}
+
 CsgSurface plane_surface(const Placement& frame, const Vec3& n, double offset) {
     CsgSurface s;
     s.frame = frame;
@@ -493,22 +514,40 @@ std::size_t CsgSolid::add(const CsgNode& node, const Placement& parent, double o
         return index;
     }
     if (node.operands.empty()) throw InvalidInput("an operation has no operands");
-    Box3 bounds;
     for (std::size_t k = 0; k < node.operands.size(); ++k) {
         const double sign = node.op == CsgOp::Difference && k > 0 ? -orientation : orientation;
-        const std::size_t child = add(node.operands[k], world, sign, depth + 1);
+        const std::size_t child = add(node.operands[k], world, sign, depth + 1);  // grows nodes_
         nodes_[index].operands.push_back(child);
-        const Box3& b = nodes_[child].bounds;
-        if (k == 0) {
-            bounds = b;
-        } else if (node.op == CsgOp::Union) {
-            bounds.extend(b);
-        } else if (node.op == CsgOp::Intersection) {
-            bounds = bounds.intersection(b);
-        }
     }
-    nodes_[index].bounds = bounds;
+    nodes_[index].bounds = operation_bounds(nodes_[index]);
     return index;
+}
+
+Box3 CsgSolid::operation_bounds(const Node& node) const {
+    const auto is_half_space = [&](std::size_t child) {
+        return nodes_[child].op == CsgOp::Primitive &&
+               std::holds_alternative<HalfSpaceShape>(nodes_[child].shape);
+    };
+    // The face of a half-space operand as n . x <= offset (its complement for a subtrahend).
+    const auto clip = [&](Box3 box, std::size_t child, double side) {
+        const CsgSurface& face = surfaces_[nodes_[child].first_surface];
+        const Vec3 n = side * face.frame.rotation.col(2);
+        return clip_box(box, n, n.dot(face.frame.translation));
+    };
+    const std::vector<std::size_t>& operands = node.operands;
+    Box3 box = nodes_[operands.front()].bounds;
+    for (std::size_t k = 1; k < operands.size(); ++k) {
+        const Box3& b = nodes_[operands[k]].bounds;
+        if (node.op == CsgOp::Union) box.extend(b);
+        if (node.op == CsgOp::Intersection) box = box.intersection(b);
+    }
+    // Half-spaces cut the finite box after the other operands have bounded it.
+    for (std::size_t k = 0; k < operands.size(); ++k) {
+        if (!is_half_space(operands[k])) continue;
+        if (node.op == CsgOp::Intersection) box = clip(box, operands[k], 1.0);
+        if (node.op == CsgOp::Difference && k > 0) box = clip(box, operands[k], -1.0);
+    }
+    return box;
 }
 
 void CsgSolid::intersect(const Ray& ray, std::vector<Interval>& out) const {

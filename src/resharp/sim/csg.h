@@ -121,7 +121,8 @@ public:
     explicit CsgSolid(const CsgNode& root);
 
     /// The root's box: exact for each shape and for unions of shapes; an intersection keeps the
-    /// overlap of its operands' boxes, a difference its first operand's.
+    /// overlap of its operands' boxes, a difference its first operand's, each cut by the
+    /// half-spaces among its operands.
     Box3 bounds() const override { return nodes_.front().bounds; }
     void intersect(const Ray& ray, std::vector<Interval>& out) const override;
     /// Appends the sorted, disjoint solid intervals of the line origin + t * direction (unit
@@ -144,6 +145,7 @@ private:
     };
 
     std::size_t add(const CsgNode& node, const Placement& parent, double orientation, int depth);
+    Box3 operation_bounds(const Node& node) const;
     void intersect_node(std::size_t node, const Vec3& origin, const Vec3& direction,
                         std::vector<Interval>& out) const;
     bool contains_node(std::size_t node, const Vec3& p) const;
