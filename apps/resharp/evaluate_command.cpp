@@ -283,6 +283,7 @@ json to_json(const eval::CadMetrics& m) {
             {"edge_recall", c.recall},
             {"crease_length", c.mesh_length},
             {"true_crease_length", c.true_length},
+            {"stray_crease_length", c.stray_length},
             {"crease_length_ratio", number(c.length_ratio)}};
 }
 
@@ -366,7 +367,8 @@ void run_evaluate(EvaluateArguments args) {
             {"input", to_json(eval::measure_cad_part(input, surface_in, creases, diagonal, cad))},
             {"diagonal_mm", diagonal},
             {"sharp_angle_deg", cad.sharp_angle_deg},
-            {"tau_diagonals", cad.tolerance}};
+            {"tau_diagonals", cad.tolerance},
+            {"stray_beyond_diagonals", cad.far}};
     }
 
     j["settings"] = {{"h_mm", h},

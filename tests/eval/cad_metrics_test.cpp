@@ -121,6 +121,10 @@ TEST(CreaseMetrics, ChamferedCubeFindsNoTrueEdgeAndDoublesTheLength) {
     EXPECT_DOUBLE_EQ(m.recall, 0.0);
     EXPECT_DOUBLE_EQ(m.ef1, 0.0);
     EXPECT_GT(m.ecd, score(test::box_mesh(kSide, kSide, kSide)).ecd);
+    // The creases lie 0.5 from the true edges, farther than the default 1 % of the diagonal
+    // (0.17), all but the corner triangles' near ends.
+    EXPECT_GT(m.stray_length, 0.9 * m.mesh_length);
+    EXPECT_EQ(score(test::box_mesh(kSide, kSide, kSide)).stray_length, 0.0);
 }
 
 TEST(CreaseMetrics, EmptySidesScoreByDefinition) {
@@ -133,6 +137,7 @@ TEST(CreaseMetrics, EmptySidesScoreByDefinition) {
     EXPECT_TRUE(std::isnan(phantom.ecd));
     EXPECT_EQ(phantom.precision, 0.0);
     EXPECT_EQ(phantom.ef1, 0.0);
+    EXPECT_DOUBLE_EQ(phantom.stray_length, phantom.mesh_length);
     EXPECT_TRUE(std::isnan(phantom.length_ratio));
 }
 

@@ -102,8 +102,8 @@ CreaseMetrics compare_creases(const CurveSamples& exact, const CurveSamples& mes
                               const CreaseMetricsOptions& o) {
     check(exact, "the true sharp edges");
     check(mesh, "the mesh's sharp edges");
-    if (!(o.tolerance > 0.0) || !(o.unit > 0.0)) {
-        throw InvalidInput("crease metrics: tolerance and unit must be positive");
+    if (!(o.tolerance > 0.0) || !(o.far > 0.0) || !(o.unit > 0.0)) {
+        throw InvalidInput("crease metrics: tolerance, far and unit must be positive");
     }
     CreaseMetrics m;
     m.true_samples = exact.size();
@@ -118,6 +118,7 @@ CreaseMetrics compare_creases(const CurveSamples& exact, const CurveSamples& mes
         m.precision = mesh.size() == 0 ? 1.0 : 0.0;
         m.recall = exact.size() == 0 ? 1.0 : 0.0;
         m.ef1 = both ? 1.0 : 0.0;
+        m.stray_length = m.mesh_length;
         return m;
     }
     std::vector<double> from_exact = distances_to_pieces(exact, mesh);
@@ -129,6 +130,8 @@ CreaseMetrics compare_creases(const CurveSamples& exact, const CurveSamples& mes
     m.ecd = weighted_mean(exact, from_exact, square) + weighted_mean(mesh, from_mesh, square);
     m.recall = weighted_mean(exact, from_exact, within);
     m.precision = weighted_mean(mesh, from_mesh, within);
+    m.stray_length = m.mesh_length * weighted_mean(mesh, from_mesh,
+                                                   [&](double d) { return d > o.far ? 1.0 : 0.0; });
     m.ef1 = m.precision + m.recall > 0.0 ? 2.0 * m.precision * m.recall / (m.precision + m.recall)
                                          : 0.0;
     return m;
@@ -143,9 +146,9 @@ CadMetrics measure_cad_part(const Mesh& mesh, const SurfaceMetrics& surface,
     m.chamfer = surface.chamfer_l1 / diagonal;
     m.hausdorff = surface.hausdorff / diagonal;
     m.normal_consistency = surface.normal_consistency;
-    m.creases = compare_creases(exact_creases,
-                                sample_mesh_creases(mesh, options.sharp_angle_deg, options.spacing),
-                                {.tolerance = options.tolerance, .unit = diagonal});
+    m.creases = compare_creases(
+        exact_creases, sample_mesh_creases(mesh, options.sharp_angle_deg, options.spacing),
+        {.tolerance = options.tolerance, .far = options.far, .unit = diagonal});
     return m;
 }
 

@@ -42,7 +42,8 @@ CurveSamples sample_mesh_creases(const Mesh& mesh, double sharp_angle_deg, doubl
 
 struct CreaseMetricsOptions {
     double tolerance = 1e-3;  ///< τ of the Edge F-score, in units of `unit`
-    double unit = 1.0;        ///< mm; every length and distance is divided by it (the diagonal)
+    double far = 1e-2;  ///< a mesh sharp edge this far from every true one is a stray, in `unit`
+    double unit = 1.0;  ///< mm; every length and distance is divided by it (the diagonal)
 };
 
 /// Sharp edges of a mesh against the true ones. Lengths and distances in `unit`.
@@ -51,6 +52,9 @@ struct CreaseMetrics {
     double true_length = 0.0;   ///< length of the true sharp edges
     double mesh_length = 0.0;   ///< length of the mesh's sharp edges
     double length_ratio = 0.0;  ///< mesh_length / true_length (NaN without true edges)
+    /// Length of the mesh's sharp edges farther than `far` from every true one (creases where
+    /// the part is smooth or flat), in unit.
+    double stray_length = 0.0;
     /// Mean squared distance both ways, summed; 0 when neither has sharp edges, NaN when only
     /// one has.
     double ecd = 0.0;
@@ -76,6 +80,7 @@ struct CadMetrics {
 struct CadMetricsOptions {
     double sharp_angle_deg = 30.0;  ///< θ_s: the mesh's sharp edges (the true ones: exact_creases)
     double tolerance = 1e-3;        ///< τ of the Edge F-score, in diagonals
+    double far = 1e-2;              ///< stray sharp edges lie farther than this, in diagonals
     double spacing = 0.1;           ///< longest piece of a mesh edge, mm (the exact samples' pitch)
 };
 

@@ -415,14 +415,16 @@ void check_shape(const Shape& shape) {
                        }
                    },
                    [](const ConeShape& c) {
-                       if (!(c.length > 0.0)) throw InvalidInput("a cone or cylinder needs a positive length");
+                       if (!(c.length > 0.0))
+                           throw InvalidInput("a cone or cylinder needs a positive length");
                        if (!(c.radius_bottom >= 0.0 && c.radius_top >= 0.0) ||
                            !(c.radius_bottom > 0.0 || c.radius_top > 0.0)) {
                            throw InvalidInput("a cone's radii must not be negative nor both zero");
                        }
                    },
                    [](const SphereShape& s) {
-                       if (!(s.radius > 0.0)) throw InvalidInput("a sphere needs a positive radius");
+                       if (!(s.radius > 0.0))
+                           throw InvalidInput("a sphere needs a positive radius");
                    },
                    [](const TorusShape& t) {
                        if (!(t.minor > 0.0) || !(t.major > t.minor)) {
