@@ -135,8 +135,9 @@ SURFACE_COLUMNS = [("Chamfer", change("chamfer", "length")),
 
 def goals_table(results):
     lines = ["| cells | rows | Edge F-score >= 0.98 | crease length within 5 % | "
-             "no measure worse than input | lowest Edge F-score (part) |",
-             "| --- | --- | --- | --- | --- | --- |"]
+             "no measure worse than input | lowest Edge F-score (part) | "
+             "largest stray / true (part) |",
+             "| --- | --- | --- | --- | --- | --- | --- |"]
     by_cells = {}
     for part, orientation, cells, r in rows(results):
         by_cells.setdefault(cells, []).append((part, orientation, r))
@@ -147,9 +148,11 @@ def goals_table(results):
                        if r["cad"]["output"]["crease_length_ratio"] is not None
                        and abs(r["cad"]["output"]["crease_length_ratio"] - 1) <= 0.05)
         lowest = min(ef1)
+        strays = [(stray_share(r["cad"]["output"]) or 0.0, f"{p} {o}") for p, o, r in group]
+        stray = max(strays)
         lines.append(f"| {cells} | {len(group)} | {sum(1 for x, _ in ef1 if x >= 0.98)} | "
                      f"{ratio_ok} | {sum(1 for _, _, r in group if not worse(r))} | "
-                     f"{lowest[0]:.3f} ({lowest[1]}) |")
+                     f"{lowest[0]:.3f} ({lowest[1]}) | {stray[0]:.3f} ({stray[1]}) |")
     return "\n".join(lines)
 
 
