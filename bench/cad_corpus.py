@@ -152,7 +152,8 @@ def goals_table(results):
         stray = max(strays)
         lines.append(f"| {cells} | {len(group)} | {sum(1 for x, _ in ef1 if x >= 0.98)} | "
                      f"{ratio_ok} | {sum(1 for _, _, r in group if not worse(r))} | "
-                     f"{lowest[0]:.3f} ({lowest[1]}) | {stray[0]:.3f} ({stray[1]}) |")
+                     f"{lowest[0]:.3f} ({lowest[1]}) | "
+                     f"{stray[0]:.3f} ({stray[1] if stray[0] > 0 else 'none'}) |")
     return "\n".join(lines)
 
 
