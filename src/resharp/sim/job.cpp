@@ -22,7 +22,8 @@ public:
     explicit JobReader(const std::string& source) : source_(source) {}
 
     Job read(const json& root, const std::string& folder) const {
-        expect_keys(root, "", {"stock", "pitch", "program", "start", "tools"});
+        expect_keys(root, "",
+                    {"stock", "pitch", "program", "start", "tools", "mesher", "seam_duplicates"});
         Job job;
         const json& stock = member(root, "", "stock");
         expect_keys(stock, "stock", {"min", "max"});
@@ -44,6 +45,7 @@ public:
         const json& tools = member(root, "", "tools");
         if (!tools.is_array() || tools.empty()) bad("tools", "must be a non-empty array");
         for (std::size_t i = 0; i < tools.size(); ++i) read_tool(tools[i], i, job);
+        read_meshing(root, job.meshing);
         return job;
     }
 
@@ -83,6 +85,25 @@ private:
     Vec3 point(const json& value, const std::string& key) const {
         if (!value.is_array() || value.size() != 3) bad(key, "must be [x, y, z]");
         return Vec3(number(value[0], key), number(value[1], key), number(value[2], key));
+    }
+
+    void read_meshing(const json& root, MeshingOptions& meshing) const {
+        if (root.contains("mesher")) {
+            const json& name = root["mesher"];
+            const auto mesher =
+                name.is_string() ? mesher_from_string(name.get<std::string>()) : std::nullopt;
+            if (!mesher)
+                bad("mesher", "must be \"mc\", \"bisect\", \"midpoint\" or \"surface-nets\"");
+            meshing.mesher = *mesher;
+        }
+        if (root.contains("seam_duplicates")) {
+            const json& seams = root["seam_duplicates"];
+            if (!seams.is_number_integer() || seams.get<long long>() < 0 ||
+                seams.get<long long>() > 100000) {
+                bad("seam_duplicates", "must be an integer in 0..100000");
+            }
+            meshing.seam_duplicates = seams.get<int>();
+        }
     }
 
     void read_tool(const json& entry, std::size_t index, Job& job) const {
