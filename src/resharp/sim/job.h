@@ -16,7 +16,10 @@
 ///   "tools": [
 ///     {"number": 1, "type": "flat", "diameter": 10, "flute_length": 30},
 ///     {"number": 2, "type": "ball", "diameter": 6, "flute_length": 20},
-///     {"number": 3, "type": "bullnose", "diameter": 8, "corner_radius": 1, "flute_length": 20}
+///     {"number": 3, "type": "bullnose", "diameter": 8, "corner_radius": 1, "flute_length": 20},
+///     {"number": 4, "type": "vbit", "diameter": 12, "tip_angle": 90, "tip_diameter": 0.5,
+///      "flute_length": 20}                               // tip angle: included, degrees;
+///                                                        //   tip diameter optional, default 0
 ///   ]
 /// }
 /// ```
