@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <numbers>
 #include <sstream>
 
 #include "mesh_checks.h"
@@ -181,19 +182,44 @@ TEST_P(Meshers, BallEndPlungeIsClosedWithItsFloorVerticesNearTheSphere) {
     EXPECT_GT(checked, 50u);
 }
 
-TEST_P(Meshers, BracketExampleIsClosedManifoldOutward) {
-    const Job job = read_job(std::string(RESHARP_SOURCE_DIR) + "/examples/bracket/job.json");
+OracleMesh mesh_example(const std::string& name, Mesher mesher) {
+    const Job job = read_job(std::string(RESHARP_SOURCE_DIR) + "/examples/" + name + "/job.json");
     const Simulation sim = simulate(job.stock, job.tools,
                                     read_gcode(job.program, {.start_position = job.start_position}),
                                     {.pitch = job.pitch});
-    const OracleMesh m = mesh_dexels(sim.grid, {.mesher = GetParam()});
-    test::expect_clean_closed_outward(m.mesh);
-    double farthest = 0.0;
-    for (std::size_t v = 0; v < m.mesh.vertex_count(); ++v) {
-        farthest = std::max(farthest, (m.mesh.positions[v] - m.surface_points[v]).norm());
-        EXPECT_NEAR(m.normals[v].norm(), 1.0, 1e-12);
+    return mesh_dexels(sim.grid, {.mesher = mesher});
+}
+
+TEST_P(Meshers, BracketAndVCarveExamplesAreClosedManifoldOutward) {
+    for (const char* example : {"bracket", "vcarve"}) {
+        const OracleMesh m = mesh_example(example, GetParam());
+        test::expect_clean_closed_outward(m.mesh);
+        EXPECT_EQ(m.stats.clamped_vertices, 0u) << example;
+        double farthest = 0.0;
+        for (std::size_t v = 0; v < m.mesh.vertex_count(); ++v) {
+            farthest = std::max(farthest, (m.mesh.positions[v] - m.surface_points[v]).norm());
+            EXPECT_NEAR(m.normals[v].norm(), 1.0, 1e-12);
+        }
+        EXPECT_LE(farthest, vertex_bound(GetParam())) << example;
     }
-    EXPECT_LE(farthest, vertex_bound(GetParam()));
+}
+
+TEST(Meshers, VCarveFlanksAreConeFacesAtTheirBitAngles) {
+    // Every cone vertex of the example's 90° tools has its normal 45° from the vertical, of
+    // the 60° bit (tool 2, moves between its change and the next) 60°.
+    const OracleMesh m = mesh_example("vcarve", Mesher::MarchingCubes);
+    std::size_t cone = 0, steep = 0;
+    for (std::size_t v = 0; v < m.mesh.vertex_count(); ++v) {
+        if (m.surface_ids[v] % kSurfacesPerMove != static_cast<int>(ToolPart::Cone)) continue;
+        ++cone;
+        const double from_vertical = std::acos(std::clamp(m.normals[v].z(), -1.0, 1.0));
+        const bool is_45 = std::abs(from_vertical - std::numbers::pi / 4) < 1e-9;
+        const bool is_60 = std::abs(from_vertical - std::numbers::pi / 3) < 1e-9;
+        EXPECT_TRUE(is_45 || is_60) << "vertex " << v << " at " << from_vertical;
+        steep += is_60;
+    }
+    EXPECT_GT(cone, 10000u);
+    EXPECT_GT(steep, 500u);
 }
 
 TEST_P(Meshers, SeamDuplicatesAddExactlyTheTrianglesOnTheirPlanes) {
