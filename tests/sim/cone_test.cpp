@@ -229,8 +229,8 @@ TEST(ConeTool, RampAgreesWithADenseUnionOfCopies) {
             }
         }
         EXPECT_GT(both, 150);
-        RecordProperty("worst_gap_mm_" + std::to_string(index), std::to_string(worst));
-        RecordProperty("worst_normal_" + std::to_string(index++), std::to_string(worst_normal));
+        RecordProperty("worst_gap_mm_" + std::to_string(index), test::short_number(worst));
+        RecordProperty("worst_normal_" + std::to_string(index++), test::short_number(worst_normal));
     }
 }
 

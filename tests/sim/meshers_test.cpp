@@ -95,7 +95,7 @@ TEST_P(Meshers, BoxAndSphereAreClosedManifoldOutwardWithVerticesNearTheSurface) 
             farthest = std::max(farthest, (p - solid.nearest(p)).norm());
         }
         EXPECT_LE(farthest, vertex_bound(GetParam()));
-        RecordProperty(std::string("farthest_vertex_mm_") + name, std::to_string(farthest));
+        RecordProperty(std::string("farthest_vertex_mm_") + name, test::short_number(farthest));
     }
 }
 
@@ -119,8 +119,8 @@ TEST_P(Meshers, SurfacePointsOnASphereAreWithinTheBound) {
         worst = std::max(worst, error);
         worst_normal = std::max(worst_normal, (m.normals[v] - (exact - kCentre) / kRadius).norm());
     }
-    RecordProperty("worst_surface_point_error_mm", std::to_string(worst));
-    RecordProperty("worst_normal_error", std::to_string(worst_normal));
+    RecordProperty("worst_surface_point_error_mm", test::short_number(worst));
+    RecordProperty("worst_normal_error", test::short_number(worst_normal));
     if (GetParam() == Mesher::MarchingCubes) {
         EXPECT_LE(worst, 1e-12);
     }
@@ -154,7 +154,7 @@ TEST_P(Meshers, SurfacePointsOnABoxAreExactOffItsEdges) {
         }
     }
     RecordProperty("vertices_off_near_edges", std::to_string(off));
-    RecordProperty("worst_surface_point_error_mm", std::to_string(worst));
+    RecordProperty("worst_surface_point_error_mm", test::short_number(worst));
 }
 
 /// A ball end mill of radius 2.5 plunged from above to a tip height of 5.63 into the stock
