@@ -61,14 +61,19 @@ ToolPath program(const std::string& text) {
     return parse_gcode(in, "cone.nc", {.start_position = Vec3(20, 15, 60)});
 }
 
+/// `stock` milled by the G-code `text` with `tool` as T1, meshed by marching cubes; checked
+/// closed, manifold and outward.
+OracleMesh milled(const Box3& stock, const Tool& tool, const std::string& text) {
+    const OracleMesh m = mesh_dexels(simulate(stock, {{1, tool}}, program(text)).grid);
+    test::expect_clean_closed_outward(m.mesh);
+    return m;
+}
+
 TEST(ConeTool, StraightVGrooveHasFlanksAtTheToolAngleAndItsDepth) {
     // A 90° V-bit cuts along x at y = 15.3 with its tip 2.3 mm under the top face z = 10.
-    const Box3 stock(Vec3(0, 0, 0), Vec3(40, 30, 10));
-    const std::map<int, Tool> tools{{1, Tool::make_cone(10, 90, 0, 20)}};
-    const Simulation sim =
-        simulate(stock, tools, program("T1 M6\nG0 X-8 Y15.3 Z30\nG0 Z7.7\nG1 X48\nG0 Z30\nM30\n"));
-    const OracleMesh m = mesh_dexels(sim.grid);
-    test::expect_clean_closed_outward(m.mesh);
+    const OracleMesh m =
+        milled(Box3(Vec3(0, 0, 0), Vec3(40, 30, 10)), Tool::make_cone(10, 90, 0, 20),
+               "T1 M6\nG0 X-8 Y15.3 Z30\nG0 Z7.7\nG1 X48\nG0 Z30\nM30\n");
     const double c = std::cos(45 * kDeg);
     std::size_t flank = 0;
     double deepest = 1e300;
@@ -89,12 +94,9 @@ TEST(ConeTool, StraightVGrooveHasFlanksAtTheToolAngleAndItsDepth) {
 
 TEST(ConeTool, PlungeLeavesAFrustumHole) {
     // A chamfer mill (90°, flat tip of diameter 2) plunged to z = 6.3 under the top z = 10.
-    const Box3 stock(Vec3(0, 0, 0), Vec3(20, 20, 10));
-    const std::map<int, Tool> tools{{1, Tool::make_cone(12, 90, 2, 20)}};
-    const Simulation sim =
-        simulate(stock, tools, program("T1 M6\nG0 X10.13 Y9.71 Z30\nG1 Z6.3\nG0 Z30\nM30\n"));
-    const OracleMesh m = mesh_dexels(sim.grid);
-    test::expect_clean_closed_outward(m.mesh);
+    const OracleMesh m =
+        milled(Box3(Vec3(0, 0, 0), Vec3(20, 20, 10)), Tool::make_cone(12, 90, 2, 20),
+               "T1 M6\nG0 X10.13 Y9.71 Z30\nG1 Z6.3\nG0 Z30\nM30\n");
     std::size_t cone = 0, floor = 0;
     for (std::size_t v = 0; v < m.mesh.vertex_count(); ++v) {
         const Vec3& p = m.mesh.positions[v];
