@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <set>
 #include <sstream>
 
 #include "mesh_checks.h"
@@ -296,6 +298,48 @@ TEST(Meshers, SurfaceNetsPutOneVertexPerCellPolygonAndTwoTrianglesPerCrossedEdge
     EXPECT_EQ(net.mesh.face_count(), 2 * mc.mesh.vertex_count());
     // A sphere is a closed genus-0 surface: V - E + F = 2 with E = 3F / 2.
     EXPECT_EQ(net.mesh.vertex_count(), net.mesh.face_count() / 2 + 2);
+    // Each vertex lies in a cell the surface crosses: one around a crossed edge, an edge
+    // holding a marching-cubes vertex.
+    const GridSpec& spec = solid.grid.spec;
+    const auto cell_of = [&](const Vec3& p) {
+        std::array<long, 3> c{};
+        for (int a = 0; a < 3; ++a)
+            c[a] = std::lround(std::floor((p[a] - spec.origin[a]) / kPitch));
+        return c;
+    };
+    std::set<std::array<long, 3>> crossed;
+    for (const Vec3& q : mc.mesh.positions) {
+        std::array<long, 3> c = cell_of(q);
+        int along = -1;  // the one axis whose coordinate is off the grid
+        for (int a = 0; a < 3; ++a) {
+            const long k = std::lround((q[a] - spec.origin[a]) / kPitch);
+            if (q[a] == spec.node(a, static_cast<int>(k))) {
+                c[a] = k;
+            } else {
+                EXPECT_EQ(along, -1);
+                along = a;
+            }
+        }
+        ASSERT_NE(along, -1);
+        for (int q2 = 0; q2 < 4; ++q2) {
+            std::array<long, 3> around = c;
+            around[(along + 1) % 3] -= q2 & 1;
+            around[(along + 2) % 3] -= q2 >> 1;
+            crossed.insert(around);
+        }
+    }
+    for (std::size_t v = 0; v < net.mesh.vertex_count(); ++v) {
+        EXPECT_TRUE(crossed.count(cell_of(net.mesh.positions[v]))) << "vertex " << v;
+    }
+    // Each quad is its two triangles in a row, split along its shorter diagonal.
+    const auto& p = net.mesh.positions;
+    for (std::size_t f = 0; f + 1 < net.mesh.face_count(); f += 2) {
+        const Triangle& a = net.mesh.triangles[f];
+        const Triangle& b = net.mesh.triangles[f + 1];
+        EXPECT_EQ(a[0], b[0]);
+        EXPECT_EQ(a[2], b[1]);
+        EXPECT_LE((p[a[0]] - p[a[2]]).norm(), (p[a[1]] - p[b[2]]).norm()) << "quad " << f / 2;
+    }
 }
 
 TEST(Meshers, NamesRoundTripAndUnknownNamesAreRefused) {
