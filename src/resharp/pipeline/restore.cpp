@@ -187,8 +187,10 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
         r.guard.refused_by_quality += guarded.report.refused_by_quality;
         r.guard.refused_by_guard += guarded.report.refused_by_guard;
         r.guard.repairs += guarded.report.repairs;
-        clock.run(Stage::Split,
-                  [&] { r.output = split_faces(input.mesh, r.points.points, guarded.accepted); });
+        clock.run(Stage::Split, [&] {
+            r.output = {};  // the last round's split goes first: one alive at a time
+            r.output = split_faces(input.mesh, r.points.points, guarded.accepted);
+        });
         HarmReport harm;
         clock.run(Stage::HarmCheck, [&] { harm = check_harm(input, r.output, options.harm); });
         ++r.rounds;
