@@ -2,13 +2,13 @@
 
 #include <cmath>
 
+#include "resharp/eval/evaluation_files.h"
+
 namespace resharp::cli {
 namespace {
 
 constexpr io::Rgb kEdgeVertex{220, 40, 30};
 constexpr io::Rgb kPlainVertex{200, 200, 200};
-constexpr io::Rgb kEdgeTriangle{255, 210, 0};
-constexpr io::Rgb kCornerTriangle{230, 0, 230};
 constexpr io::Rgb kBandFace{80, 80, 80};
 
 /// Distinct muted colours by walking the hue circle in golden-angle steps; saturation and value
@@ -61,9 +61,9 @@ SegmentColors color_segments(const Segmentation& s) {
     colors.face.reserve(s.face_patch.size());
     for (std::size_t f = 0; f < s.face_patch.size(); ++f) {
         if (s.face_role[f] == BandRole::Corner)
-            colors.face.push_back(kCornerTriangle);
+            colors.face.push_back(eval::kCornerTriangleColor);
         else if (s.face_role[f] == BandRole::Edge)
-            colors.face.push_back(kEdgeTriangle);
+            colors.face.push_back(eval::kEdgeTriangleColor);
         else if (s.face_patch[f] == kNoIndex)
             colors.face.push_back(kBandFace);
         else
