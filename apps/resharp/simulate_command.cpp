@@ -3,11 +3,13 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <span>
 #include <sstream>
 #include <string>
 
 #include "commands.h"
 #include "grid_choice.h"
+#include "resharp/core/errors.h"
 #include "resharp/core/stage_timer.h"
 #include "resharp/io/mesh_io.h"
 #include "resharp/sim/csg_file.h"
@@ -23,7 +25,9 @@ struct SimulateArguments {
     std::string solid;  // a CSG solid file instead of a job
     std::string output;
     std::string oracle;
-    GridChoice grid;  // neither given: the job's pitch, or 100 cells for a solid
+    GridChoice grid;           // neither given: the job's pitch, or 100 cells for a solid
+    std::string mesher;        // empty: the job's
+    int seam_duplicates = -1;  // -1: the job's
     bool ascii = false;
     bool quiet = false;
     sim::SimulationOptions options;
@@ -66,11 +70,28 @@ private:
 
 double seconds(std::chrono::nanoseconds t) { return std::chrono::duration<double>(t).count(); }
 
+/// The grid meshed with the meshing options of the file (`from_file`: a job's, or the defaults
+/// for a solid), the command line's where given. A seam count the grid cannot hold is reported
+/// against the job key or the flag that set it.
+sim::OracleMesh mesh(const sim::DexelGrid& grid, const sim::MeshingOptions& from_file,
+                     const SimulateArguments& args) {
+    sim::MeshingOptions options = from_file;
+    if (!args.mesher.empty()) options.mesher = *sim::mesher_from_string(args.mesher);
+    if (args.seam_duplicates >= 0) options.seam_duplicates = args.seam_duplicates;
+    try {
+        return sim::mesh_dexels(grid, options);
+    } catch (const InvalidInput& e) {
+        throw InvalidInput((args.seam_duplicates >= 0 ? std::string("--seam-duplicates")
+                                                      : args.job + ": seam_duplicates") +
+                           ": " + e.what());
+    }
+}
+
 /// What was meshed, with what it took.
 struct Meshed {
     sim::OracleMesh mesh;
     sim::GridSpec grid;
-    std::string summary;  // the first line of the report
+    std::string summary;  // the start of the report's first line
     std::chrono::nanoseconds sampling{}, meshing{};
 };
 
@@ -89,7 +110,7 @@ Meshed mill_job(const SimulateArguments& args) {
     Meshed m;
     m.sampling = simulation_timer.elapsed();
     const StageTimer meshing_timer;
-    m.mesh = sim::mesh_dexels(simulation.grid);
+    m.mesh = mesh(simulation.grid, job.meshing, args);
     m.meshing = meshing_timer.elapsed();
     m.grid = simulation.grid.spec;
     std::ostringstream s;
@@ -109,7 +130,7 @@ Meshed sample_solid_file(const SimulateArguments& args) {
     Meshed m;
     m.sampling = sampling_timer.elapsed();
     const StageTimer meshing_timer;
-    m.mesh = sim::mesh_dexels(grid);
+    m.mesh = mesh(grid, sim::MeshingOptions{}, args);
     m.meshing = meshing_timer.elapsed();
     m.grid = grid.spec;
     m.summary =
@@ -119,16 +140,22 @@ Meshed sample_solid_file(const SimulateArguments& args) {
 
 void run_simulate(const SimulateArguments& args) {
     const Meshed m = args.solid.empty() ? mill_job(args) : sample_solid_file(args);
+    const sim::OracleMesh& meshed = m.mesh;
     const std::string& source = args.solid.empty() ? args.job : args.solid;
     const std::string output =
         args.output.empty() ? std::filesystem::path(source).replace_extension(".stl").string()
                             : args.output;
     const io::WriteOptions encoding{.encoding =
                                         args.ascii ? io::Encoding::Ascii : io::Encoding::Binary};
-    io::write_mesh(output, m.mesh.mesh, encoding);
+    io::write_mesh(output, meshed.mesh, encoding);
     if (!args.oracle.empty()) {
-        io::write_mesh(args.oracle, m.mesh.mesh, encoding,
-                       {.vertex_normals = m.mesh.normals, .vertex_surfaces = m.mesh.surface_ids});
+        // Vertices on the surface (mc) are their own surface points: no sx, sy, sz.
+        const bool on_surface = meshed.surface_points == meshed.mesh.positions;
+        io::write_mesh(args.oracle, meshed.mesh, encoding,
+                       {.vertex_normals = meshed.normals,
+                        .vertex_surfaces = meshed.surface_ids,
+                        .vertex_surface_points = on_surface ? std::span<const Vec3>()
+                                                            : std::span(meshed.surface_points)});
     }
     if (args.quiet) return;
     const auto& counts = m.grid.counts;
@@ -137,12 +164,16 @@ void run_simulate(const SimulateArguments& args) {
       << " at h = " << m.grid.pitch << " mm\n"
       << "  " << (args.solid.empty() ? "simulation " : "sampling ") << seconds(m.sampling)
       << " s, meshing " << seconds(m.meshing) << " s\n"
-      << "  " << m.mesh.mesh.face_count() << " triangles, " << m.mesh.mesh.vertex_count()
-      << " vertices -> " << output;
+      << "  " << meshed.mesh.face_count() << " triangles, " << meshed.mesh.vertex_count()
+      << " vertices";
+    if (meshed.stats.duplicated_triangles > 0) {
+        s << " (" << meshed.stats.duplicated_triangles << " duplicated on seams)";
+    }
+    s << " -> " << output;
     if (!args.oracle.empty()) s << ", oracle -> " << args.oracle;
     s << "\n";
-    if (m.mesh.stats.clamped_vertices > 0) {
-        s << "  note: " << m.mesh.stats.clamped_vertices
+    if (meshed.stats.clamped_vertices > 0) {
+        s << "  note: " << meshed.stats.clamped_vertices
           << " vertices were taken from the nearest ray crossing off their cell edge\n";
     }
     std::cerr << s.str();
@@ -155,8 +186,8 @@ void add_simulate_command(CLI::App& app) {
     CLI::App* command = app.add_subcommand(
         "simulate",
         "Mill a box stock along a G-code program on a tri-dexel grid, or sample a CSG solid "
-        "(--solid) on it, and mesh the result with marching cubes, every vertex exactly on "
-        "the surface. The job file (JSON) gives the stock, the tool table, the pitch and the "
+        "(--solid) on it, and mesh the result (marching cubes by default, every vertex exactly "
+        "on the surface). The job file (JSON) gives the stock, the tool table, the pitch and the "
         "program; the solid file is described in src/resharp/sim/csg_file.h; see "
         "docs/oracle.md for the oracle file.");
     CLI::Option* job = command->add_option("job", args->job, "job file (JSON)");
@@ -177,7 +208,7 @@ void add_simulate_command(CLI::App& app) {
     add_grid_options(*command, args->grid, "the job's pitch; 100 cells for a solid");
     command
         ->add_option("--grid-phase", args->options.grid_phase,
-                     "grid nodes at stock min + (k + phase) * h")
+                     "grid nodes at the stock's (or solid's box's) min + (k + phase) * h")
         ->capture_default_str();
     command
         ->add_option("--helix-tolerance", args->options.helix_tolerance,
@@ -187,6 +218,17 @@ void add_simulate_command(CLI::App& app) {
         ->add_option("--bullnose-step", args->options.sweep.bullnose_step,
                      "spacing (mm) of the tool copies that sample a bull-nose ramp")
         ->capture_default_str();
+    command
+        ->add_option("--mesher", args->mesher,
+                     "how vertices are placed: mc (exact ray crossings), bisect (8 bisection "
+                     "steps), midpoint (cell edge midpoints), surface-nets (one per cell at the "
+                     "mean of its crossings); default: the job's, else mc")
+        ->check(CLI::IsMember({"mc", "bisect", "midpoint", "surface-nets"}));
+    command
+        ->add_option("--seam-duplicates", args->seam_duplicates,
+                     "write the triangles on K grid planes x = const twice, as parallel "
+                     "meshing jobs do on their seams; default: the job's, else 0")
+        ->check(CLI::NonNegativeNumber);
     command->add_flag("--ascii", args->ascii, "write STL and PLY as text instead of binary");
     command->add_flag("-q,--quiet", args->quiet, "no progress bar and no summary");
     command->callback([args] {

@@ -1,8 +1,11 @@
 #pragma once
 /// Running the real `resharp` executable from a test, through the shell.
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -37,5 +40,28 @@ inline CliRun run_shell(const std::string& command, const std::filesystem::path&
     run.stderr_text = text.str();
     return run;
 }
+
+/// An empty directory of the running test's own, removed again by the destructor. Flat (one
+/// per test, named after the process and the test): ctest runs each test in a process of its
+/// own, and a per-process parent directory would be left behind.
+class ScratchDir {
+public:
+    explicit ScratchDir(const std::string& prefix) {
+        std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        std::replace(name.begin(), name.end(), '/', '_');  // parameterised tests
+        path_ = std::filesystem::temp_directory_path() /
+                (prefix + "_" + std::to_string(::getpid()) + "_" + name);
+        std::filesystem::remove_all(path_);
+        std::filesystem::create_directories(path_);
+    }
+    ~ScratchDir() { std::filesystem::remove_all(path_); }
+    ScratchDir(const ScratchDir&) = delete;
+    ScratchDir& operator=(const ScratchDir&) = delete;
+
+    const std::filesystem::path& path() const { return path_; }
+
+private:
+    std::filesystem::path path_;
+};
 
 }  // namespace resharp::cli

@@ -126,6 +126,16 @@ bool is_sound_split(const InputSurface& input, const BandClassification& bands,
     return true;
 }
 
+/// Invariant of the split: it adds no boundary, non-manifold or inconsistent edge (every edge
+/// point splits both faces of its edge; no point lies on a defective edge).
+bool adds_no_open_or_nonmanifold_edge(const InputSurface& input, const SplitMesh& split) {
+    const MeshDiagnostics before = diagnose(input.mesh, input.connectivity);
+    const MeshDiagnostics after = diagnose(split.mesh, build_connectivity(split.mesh));
+    return after.boundary_edges <= before.boundary_edges &&
+           after.nonmanifold_edges <= before.nonmanifold_edges &&
+           after.inconsistent_edges <= before.inconsistent_edges;
+}
+
 }  // namespace
 
 Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const RestoreOptions& options) {
@@ -177,14 +187,17 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
         r.guard.refused_by_quality += guarded.report.refused_by_quality;
         r.guard.refused_by_guard += guarded.report.refused_by_guard;
         r.guard.repairs += guarded.report.repairs;
-        clock.run(Stage::Split,
-                  [&] { r.output = split_faces(input.mesh, r.points.points, guarded.accepted); });
+        clock.run(Stage::Split, [&] {
+            r.output = {};  // the last round's split goes first: one alive at a time
+            r.output = split_faces(input.mesh, r.points.points, guarded.accepted);
+        });
         HarmReport harm;
         clock.run(Stage::HarmCheck, [&] { harm = check_harm(input, r.output, options.harm); });
         ++r.rounds;
         if (round == 0) r.first_harm = harm;
         if (harm.is_harmless()) {
             RESHARP_EXPENSIVE_ASSERT(is_sound_split(input, bands, r.output));
+            RESHARP_EXPENSIVE_ASSERT(adds_no_open_or_nonmanifold_edge(input, r.output));
             return r;
         }
         const std::size_t before = r.undone_points;
