@@ -5,10 +5,6 @@
 namespace resharp::cli {
 namespace {
 
-constexpr io::Rgb kEdgeVertex{220, 40, 30};
-constexpr io::Rgb kPlainVertex{200, 200, 200};
-constexpr io::Rgb kEdgeTriangle{255, 210, 0};
-constexpr io::Rgb kCornerTriangle{230, 0, 230};
 constexpr io::Rgb kBandFace{80, 80, 80};
 
 /// Distinct muted colours by walking the hue circle in golden-angle steps; saturation and value
@@ -53,23 +49,45 @@ io::Rgb patch_color(Index patch) {
 
 }  // namespace
 
-SegmentColors color_segments(const Segmentation& s) {
+SegmentLayers segment_layers(const Segmentation& s) {
+    SegmentLayers layers{.is_edge_vertex = s.is_edge_vertex, .face_role = s.face_role};
+    layers.patch_color.reserve(s.face_patch.size());
+    for (Index patch : s.face_patch)
+        layers.patch_color.push_back(patch == kNoIndex ? kBandFace : patch_color(patch));
+    return layers;
+}
+
+SegmentColors color_segments(const SegmentLayers& layers) {
     SegmentColors colors;
-    colors.vertex.reserve(s.is_edge_vertex.size());
-    for (std::uint8_t edge : s.is_edge_vertex)
-        colors.vertex.push_back(edge ? kEdgeVertex : kPlainVertex);
-    colors.face.reserve(s.face_patch.size());
-    for (std::size_t f = 0; f < s.face_patch.size(); ++f) {
-        if (s.face_role[f] == BandRole::Corner)
-            colors.face.push_back(kCornerTriangle);
-        else if (s.face_role[f] == BandRole::Edge)
-            colors.face.push_back(kEdgeTriangle);
-        else if (s.face_patch[f] == kNoIndex)
-            colors.face.push_back(kBandFace);
+    colors.vertex.reserve(layers.is_edge_vertex.size());
+    for (std::uint8_t edge : layers.is_edge_vertex)
+        colors.vertex.push_back(edge ? kEdgeVertexColor : kPlainVertexColor);
+    colors.face.reserve(layers.face_role.size());
+    for (std::size_t f = 0; f < layers.face_role.size(); ++f) {
+        if (layers.face_role[f] == BandRole::Corner)
+            colors.face.push_back(kCornerTriangleColor);
+        else if (layers.face_role[f] == BandRole::Edge)
+            colors.face.push_back(kEdgeTriangleColor);
         else
-            colors.face.push_back(patch_color(s.face_patch[f]));
+            colors.face.push_back(layers.patch_color[f]);
     }
     return colors;
+}
+
+SegmentLayers layers_from_colors(std::span<const io::Rgb> vertex, std::span<const io::Rgb> face) {
+    SegmentLayers layers;
+    layers.is_edge_vertex.reserve(vertex.size());
+    for (const io::Rgb& c : vertex) layers.is_edge_vertex.push_back(c == kEdgeVertexColor);
+    layers.face_role.reserve(face.size());
+    layers.patch_color.reserve(face.size());
+    for (const io::Rgb& c : face) {
+        const BandRole role = c == kCornerTriangleColor ? BandRole::Corner
+                              : c == kEdgeTriangleColor ? BandRole::Edge
+                                                        : BandRole::None;
+        layers.face_role.push_back(role);
+        layers.patch_color.push_back(role == BandRole::None ? c : kBandFace);
+    }
+    return layers;
 }
 
 }  // namespace resharp::cli
