@@ -1,13 +1,16 @@
 #pragma once
-/// Running the real `resharp` executable from a test, through the shell.
+/// Running the real `resharp` executable from a test, through the shell, in a scratch folder.
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace resharp::cli {
 
@@ -37,5 +40,48 @@ inline CliRun run_shell(const std::string& command, const std::filesystem::path&
     run.stderr_text = text.str();
     return run;
 }
+
+/// A test with a scratch folder of its own, removed afterwards, and `resharp` to run in it.
+/// Needs RESHARP_CLI, the path of the executable.
+class CliTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        // One flat directory per test: ctest runs each test in a process of its own, and a
+        // per-process parent directory would be left behind empty.
+        dir_ = std::filesystem::temp_directory_path() /
+               (std::string(info->test_suite_name()) + "_" + std::to_string(::getpid()) + "_" +
+                info->name());
+        std::filesystem::remove_all(dir_);
+        std::filesystem::create_directories(dir_);
+    }
+    void TearDown() override { std::filesystem::remove_all(dir_); }
+
+    /// Runs `resharp ARGS` through the shell (so `prefix` can set limits).
+    CliRun resharp(const std::string& args, const std::string& prefix = "") const {
+        return run_shell(prefix + std::string(RESHARP_CLI) + " " + args, dir_ / "stderr.txt");
+    }
+    CliRun restore(const std::string& args, const std::string& prefix = "") const {
+        return resharp("restore " + args, prefix);
+    }
+    /// The scratch file `name`, quoted for the shell.
+    std::string path(const std::string& name) const { return quoted(dir_ / name); }
+    /// Every file in the scratch folder except the captured stderr.
+    std::vector<std::string> outputs() const {
+        std::vector<std::string> names;
+        for (const auto& entry : std::filesystem::directory_iterator(dir_)) {
+            if (entry.path().filename() != "stderr.txt") names.push_back(entry.path().filename());
+        }
+        return names;
+    }
+    static std::string bytes_of(const std::filesystem::path& file) {
+        std::ifstream in(file, std::ios::binary);
+        std::stringstream s;
+        s << in.rdbuf();
+        return s.str();
+    }
+
+    std::filesystem::path dir_;
+};
 
 }  // namespace resharp::cli
