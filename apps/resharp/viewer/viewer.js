@@ -3,8 +3,8 @@
 // by side under one camera, and wires the toggles. esbuild bundles it with three.js into one
 // script that the CLI inlines, so the page opens with no network.
 //
-// The page reports how it went in <html data-status>: "rendered" after the first frame, or
-// "error: ..." (tests and the benchmark wait for it).
+// The page reports how it went in <html data-status>: "rendered" once the first frame is shown,
+// or "error: ..." (tests and the benchmark wait for it).
 
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
@@ -41,19 +41,11 @@ function restoredPositions(meta, inputPositions) {
     return all;
 }
 
-/// One vertex per face corner, so that every face can carry its own colour.
-function faceGeometry(positions, triangles) {
-    const corners = new Float32Array(triangles.length * 3);
-    for (let c = 0; c < triangles.length; ++c) {
-        const v = triangles[c] * 3;
-        corners[3 * c] = positions[v];
-        corners[3 * c + 1] = positions[v + 1];
-        corners[3 * c + 2] = positions[v + 2];
-    }
+/// The mesh as three.js draws it fastest: one vertex per mesh vertex, faces by index.
+function indexedGeometry(positionAttribute, triangles) {
     const geometry = new THREE.BufferGeometry();
-    geometry.setAttribute('position', new THREE.BufferAttribute(corners, 3));
-    const colors = new Uint8Array(triangles.length * 3);
-    geometry.setAttribute('color', new THREE.BufferAttribute(colors, 3, true));
+    geometry.setAttribute('position', positionAttribute);
+    geometry.setIndex(new THREE.BufferAttribute(triangles, 1));
     geometry.computeBoundingSphere();
     return geometry;
 }
@@ -74,30 +66,38 @@ function wireframeGeometry(positionAttribute, triangles) {
 /// Colour bytes are sRGB (as in PLY files and CSS); three.js takes vertex colours as linear.
 const kSrgbToLinear = Uint8Array.from({ length: 256 },
     (_, i) => Math.round(255 * new THREE.Color().setRGB(i / 255, 0, 0, THREE.SRGBColorSpace).r));
-const linearBytes = (rgb) => [kSrgbToLinear[rgb[0]], kSrgbToLinear[rgb[1]], kSrgbToLinear[rgb[2]]];
-const kPlainBytes = kSurface.map((c) => Math.round(255 * c));
 
-/// Fills the per-corner colours of the input: the patch colour and the edge and corner
-/// triangle highlights as toggled, a plain surface colour elsewhere.
-function paintInput(attribute, meta, segments, show) {
-    const colors = attribute.array;
-    const edge = linearBytes(meta.colors.edge_triangle);
-    const corner = linearBytes(meta.colors.corner_triangle);
-    const faces = colors.length / 9;
-    for (let f = 0; f < faces; ++f) {
-        let rgb = kPlainBytes;
-        const role = segments.role[f];
-        if (show.bands && role === 1) rgb = edge;
-        else if (show.bands && role === 2) rgb = corner;
-        else if (show.patches) rgb = linearBytes(segments.patch.subarray(3 * f, 3 * f + 3));
-        for (let k = 0; k < 3; ++k) colors.set(rgb, 9 * f + 3 * k);
+/// The faces that `colorOf(f)` colours (it gives an sRGB byte triple or null), one vertex per
+/// corner so that each face has its own colour: drawn over the plain mesh.
+function coloredFaces(positions, triangles, colorOf) {
+    const faces = [];
+    for (let f = 0; f < triangles.length / 3; ++f) {
+        if (colorOf(f)) faces.push(f);
     }
-    attribute.needsUpdate = true;
+    const corners = new Float32Array(faces.length * 9);
+    const colors = new Uint8Array(faces.length * 9);
+    faces.forEach((f, i) => {
+        const rgb = colorOf(f);
+        for (let k = 0; k < 3; ++k) {
+            const v = triangles[3 * f + k] * 3;
+            for (let c = 0; c < 3; ++c) {
+                corners[9 * i + 3 * k + c] = positions[v + c];
+                colors[9 * i + 3 * k + c] = kSrgbToLinear[rgb[c]];
+            }
+        }
+    });
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.BufferAttribute(corners, 3));
+    geometry.setAttribute('color', new THREE.BufferAttribute(colors, 3, true));
+    return geometry;
 }
 
-function paintPlain(attribute) {
-    for (let i = 0; i < attribute.array.length; i += 3) attribute.array.set(kPlainBytes, i);
-    attribute.needsUpdate = true;
+/// Flat-shaded, lit by a light that follows the camera. The plain meshes are pushed back in
+/// depth a little so that overlays on the same triangles and lines on their edges win.
+function surfaceMaterial(options) {
+    return new THREE.MeshStandardMaterial({
+        flatShading: true, metalness: 0.15, roughness: 0.55, side: THREE.DoubleSide, ...options,
+    });
 }
 
 /// An 8-bit RGB triple as a three.js colour (sRGB, as CSS).
@@ -116,18 +116,17 @@ function pointsAt(positions, selected, rgb) {
         new THREE.PointsMaterial({ color: rgbColor(rgb), size: 4, sizeAttenuation: false }));
 }
 
-/// A scene with one mesh, its light following the camera, and room for overlays.
+/// A scene with one plain mesh, its light following the camera, and room for overlays.
 function makeView(geometry) {
     const scene = new THREE.Scene();
     scene.background = new THREE.Color(0xffffff);
     scene.add(new THREE.HemisphereLight(0xffffff, 0x606070, 1.2));
     const light = new THREE.DirectionalLight(0xffffff, 2.0);
     scene.add(light, light.target);
-    const material = new THREE.MeshStandardMaterial({
-        vertexColors: true, flatShading: true, metalness: 0.15, roughness: 0.55,
-        side: THREE.DoubleSide, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1,
-    });
-    scene.add(new THREE.Mesh(geometry, material));
+    const color = new THREE.Color(...kSurface);
+    scene.add(new THREE.Mesh(geometry, surfaceMaterial({
+        color, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1,
+    })));
     return { scene, light };
 }
 
@@ -164,6 +163,7 @@ function cameraFromHash() {
 }
 
 function main() {
+    const parsedMs = performance.now();  // the whole HTML is parsed: this script comes last
     const meta = JSON.parse(document.getElementById('resharp-meta').textContent);
     const inputPositions = decode('input-positions', Float32Array);
     const inputTriangles = decode('input-triangles', Uint32Array);
@@ -176,19 +176,34 @@ function main() {
         patch: decode('segment-patches', Uint8Array),
     } : null;
 
-    const inputGeometry = faceGeometry(inputPositions, inputTriangles);
-    const outGeometry = faceGeometry(outPositions, outTriangles);
-    const left = makeView(inputGeometry);
-    const right = makeView(outGeometry);
-    paintPlain(outGeometry.getAttribute('color'));
-
+    const decodedMs = performance.now();
+    const inAttribute = new THREE.BufferAttribute(inputPositions, 3);
     const outAttribute = new THREE.BufferAttribute(outPositions, 3);
+    const inputGeometry = indexedGeometry(inAttribute, inputTriangles);
+    const left = makeView(inputGeometry);
+    const right = makeView(indexedGeometry(outAttribute, outTriangles));
+
     const sharpGeometry = new THREE.BufferGeometry();
     sharpGeometry.setAttribute('position', outAttribute);
     sharpGeometry.setIndex(new THREE.BufferAttribute(sharp, 1));
     const sharpLines = new THREE.LineSegments(sharpGeometry,
         new THREE.LineBasicMaterial({ color: rgbColor(kSharpEdge) }));
     right.scene.add(sharpLines);
+
+    // The segmentation's colours over the plain input: the edge and corner triangles, and with
+    // the patches on every face. Rebuilt when a toggle changes.
+    const overlay = new THREE.Mesh(new THREE.BufferGeometry(), surfaceMaterial({ vertexColors: true }));
+    left.scene.add(overlay);
+    const paintInput = (show) => {
+        const colorOf = (f) => {
+            const role = segments.role[f];
+            if (show.bands && role === 1) return meta.colors.edge_triangle;
+            if (show.bands && role === 2) return meta.colors.corner_triangle;
+            return show.patches ? segments.patch.subarray(3 * f, 3 * f + 3) : null;
+        };
+        overlay.geometry.dispose();
+        overlay.geometry = coloredFaces(inputPositions, inputTriangles, colorOf);
+    };
 
     const edgePoints = segments
         ? pointsAt(inputPositions, segments.edgeVertex, meta.colors.edge_vertex) : null;
@@ -199,7 +214,7 @@ function main() {
     const showWires = (visible) => {
         if (visible && !wires) {
             wires = [
-                new THREE.LineSegments(wireframeGeometry(new THREE.BufferAttribute(inputPositions, 3), inputTriangles), wireMaterial),
+                new THREE.LineSegments(wireframeGeometry(inAttribute, inputTriangles), wireMaterial),
                 new THREE.LineSegments(wireframeGeometry(outAttribute, outTriangles), wireMaterial),
             ];
             left.scene.add(wires[0]);
@@ -255,12 +270,7 @@ function main() {
 
     const toggles = {};
     const repaint = () => {
-        if (segments) {
-            paintInput(inputGeometry.getAttribute('color'), meta, segments,
-                { patches: toggles.patches.checked, bands: toggles.bands.checked });
-        } else {
-            paintPlain(inputGeometry.getAttribute('color'));
-        }
+        if (segments) paintInput({ patches: toggles.patches.checked, bands: toggles.bands.checked });
         if (edgePoints) edgePoints.visible = toggles.vertices.checked;
         sharpLines.visible = toggles.sharp.checked;
         showWires(toggles.wireframe.checked);
@@ -272,6 +282,7 @@ function main() {
         if (!segments && ['patches', 'bands', 'vertices'].includes(name)) toggles[name].disabled = true;
     }
 
+    const builtMs = performance.now();
     document.getElementById('title').textContent = meta.title;
     const palette = { ...meta.colors, sharp_edge: kSharpEdge };
     for (const swatch of document.querySelectorAll('[data-swatch]')) {
@@ -284,9 +295,14 @@ function main() {
         restoredTriangles: outTriangles.length / 3,
         sharpSegments: sharp.length / 2,
         hasSegments: segments !== null,
-        renderMs: performance.now(),
+        // Milliseconds since navigation started, for the benchmark.
+        timing: { parsedMs, decodedMs, builtMs, renderedMs: performance.now() },
     };
-    setStatus('rendered');
+    // The next frame's callback runs once the first one has been drawn and shown.
+    requestAnimationFrame(() => {
+        window.resharpViewer.timing.shownMs = performance.now();
+        setStatus('rendered');
+    });
 }
 
 try {
