@@ -140,7 +140,7 @@ void add_restore_command(CLI::App& app) {
         "Restore sharp edges and corners of a mesh made by grid-based machining "
         "simulation. Formats from the extension: .stl (binary or ASCII), .obj, .ply, "
         ".off.");
-    command->footer(kBatchHelp);
+    command->footer(std::string(kBatchHelp) + "\n\n" + app.get_footer());
     command->add_option("input", args->inputs, "mesh to restore; several, or folders: a batch")
         ->required();
     command->add_option("-o,--output", args->targets.output, "restored mesh; a folder in a batch")
