@@ -17,8 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kExample = fs::path(RESHARP_SOURCE_DIR) / "examples" / "bracket.stl";
-
 class BatchCli : public CliTest {
 protected:
     /// Makes `dir_/in`: two copies of the example (one with an upper-case extension), a broken
@@ -26,9 +24,9 @@ protected:
     void SetUp() override {
         CliTest::SetUp();
         fs::create_directories(dir_ / "in" / "sub");
-        fs::copy_file(kExample, dir_ / "in" / "good.stl");
-        fs::copy_file(kExample, dir_ / "in" / "Upper.STL");
-        fs::copy_file(kExample, dir_ / "in" / "sub" / "deep.stl");
+        fs::copy_file(example_mesh(), dir_ / "in" / "good.stl");
+        fs::copy_file(example_mesh(), dir_ / "in" / "Upper.STL");
+        fs::copy_file(example_mesh(), dir_ / "in" / "sub" / "deep.stl");
         std::ofstream(dir_ / "in" / "broken.stl") << "solid broken\n  facet normal 0 0 1\n";
         std::ofstream(dir_ / "in" / "notes.txt") << "not a mesh\n";
     }

@@ -41,6 +41,13 @@ inline CliRun run_shell(const std::string& command, const std::filesystem::path&
     return run;
 }
 
+#ifdef RESHARP_SOURCE_DIR
+/// The shipped example part (examples/bracket.stl).
+inline std::filesystem::path example_mesh() {
+    return std::filesystem::path(RESHARP_SOURCE_DIR) / "examples" / "bracket.stl";
+}
+#endif
+
 /// A test with a scratch folder of its own, removed afterwards, and `resharp` to run in it.
 /// Needs RESHARP_CLI, the path of the executable.
 class CliTest : public ::testing::Test {

@@ -15,7 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 
 /// The shipped example, quoted.
-std::string example() { return quoted(fs::path(RESHARP_SOURCE_DIR) / "examples" / "bracket.stl"); }
+std::string example() { return quoted(example_mesh()); }
 
 using RestoreCli = CliTest;
 

@@ -15,8 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kExample = fs::path(RESHARP_SOURCE_DIR) / "examples" / "bracket.stl";
-
 class ViewerInBrowser : public CliTest {
 protected:
     /// Runs check_page.mjs on `page` and gives its exit code and JSON report.
@@ -38,7 +36,7 @@ protected:
 };
 
 TEST_F(ViewerInBrowser, RestoredPageShowsBothMeshesWithoutErrors) {
-    const CliRun run = restore(quoted(kExample) + " -q -o " + path("out.stl") + " --html " +
+    const CliRun run = restore(quoted(example_mesh()) + " -q -o " + path("out.stl") + " --html " +
                                path("page.html") + " --report " + path("r.json"));
     ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
     const auto [code, report] = check("page.html");
@@ -61,11 +59,11 @@ TEST_F(ViewerInBrowser, RestoredPageShowsBothMeshesWithoutErrors) {
 }
 
 TEST_F(ViewerInBrowser, TogglesShowAndHideEachLayer) {
-    ASSERT_EQ(
-        restore(quoted(kExample) + " -q -o " + path("out.ply") + " --segments " + path("seg.ply"))
-            .exit_code,
-        0);
-    const CliRun view = resharp("view " + quoted(kExample) + " " + path("out.ply") +
+    ASSERT_EQ(restore(quoted(example_mesh()) + " -q -o " + path("out.ply") + " --segments " +
+                      path("seg.ply"))
+                  .exit_code,
+              0);
+    const CliRun view = resharp("view " + quoted(example_mesh()) + " " + path("out.ply") +
                                 " --segments " + path("seg.ply") + " -o " + path("page.html"));
     ASSERT_EQ(view.exit_code, 0) << view.stderr_text;
     const auto [code, report] =
@@ -90,7 +88,7 @@ TEST_F(ViewerInBrowser, TogglesShowAndHideEachLayer) {
 }
 
 TEST_F(ViewerInBrowser, ViewRestoresTheInputWhenNoRestoredMeshIsGiven) {
-    const CliRun view = resharp("view " + quoted(kExample) + " -o " + path("page.html"));
+    const CliRun view = resharp("view " + quoted(example_mesh()) + " -o " + path("page.html"));
     ASSERT_EQ(view.exit_code, 0) << view.stderr_text;
     const auto [code, report] = check("page.html");
     ASSERT_EQ(code, 0) << report.dump(2);
@@ -136,8 +134,8 @@ TEST_F(ViewCommand, RefusesSegmentsOfAnotherMeshAndWritesNothing) {
                       path("cube-seg.ply"))
                   .exit_code,
               0);
-    const CliRun run = resharp("view " + quoted(kExample) + " --segments " + path("cube-seg.ply") +
-                               " -o " + path("page.html"));
+    const CliRun run = resharp("view " + quoted(example_mesh()) + " --segments " +
+                               path("cube-seg.ply") + " -o " + path("page.html"));
     EXPECT_EQ(run.exit_code, 2);
     EXPECT_NE(run.stderr_text.find((dir_ / "cube-seg.ply").string() + ": "), std::string::npos)
         << run.stderr_text;
@@ -145,8 +143,8 @@ TEST_F(ViewCommand, RefusesSegmentsOfAnotherMeshAndWritesNothing) {
         << run.stderr_text;
     EXPECT_FALSE(fs::exists(dir_ / "page.html"));
 
-    const CliRun not_ply = resharp("view " + quoted(kExample) + " --segments " + path("cube.stl") +
-                                   " -o " + path("page.html"));
+    const CliRun not_ply = resharp("view " + quoted(example_mesh()) + " --segments " +
+                                   path("cube.stl") + " -o " + path("page.html"));
     EXPECT_EQ(not_ply.exit_code, 2);
     EXPECT_FALSE(fs::exists(dir_ / "page.html"));
 }
