@@ -16,7 +16,6 @@
 #include "resharp/restoration/band_classification.h"
 #include "resharp/restoration/feature_normals.h"
 #include "resharp/restoration/sharp_points.h"
-#include "resharp/restoration/split.h"
 #include "resharp/segmentation/edge_segmentation.h"
 #include "resharp/segmentation/feature_segmentation.h"
 
@@ -108,14 +107,9 @@ void BM_Restoration(benchmark::State& state, const std::string& name) {
                            s.features.face_patch, s.features.vertex_patch);
         const auto normals = feature_normals(s.mesh, s.connectivity, s.face_normals,
                                              s.features.face_patch, s.features.vertex_patch, bands);
-        SharpPoints points =
-            place_sharp_points(s.mesh, s.connectivity, s.face_normals, bands, normals.normal);
-        SplitReport report;
-        std::vector<Index> source;
-        benchmark::DoNotOptimize(split_band_triangles(s.mesh, s.connectivity, s.face_normals,
-                                                      normals, s.vertex_normals, points, report,
-                                                      source)
-                                     .triangles.data());
+        const BandRestoration restored = restore_bands({s.mesh, s.connectivity, s.normals_of_mesh},
+                                                       bands, normals, RestoreOptions{});
+        benchmark::DoNotOptimize(restored.output.mesh.triangles.data());
     });
 }
 

@@ -67,7 +67,8 @@ void place_edge_points(const Mesh& mesh, const Connectivity& c, const BandClassi
             ++out.refused_by_flip_test;
             continue;
         }
-        out.edge_point[h] = out.edge_point[twin] = static_cast<Index>(out.points.size());
+        out.slots.edge_point[h] = out.slots.edge_point[twin] =
+            static_cast<Index>(out.points.size());
         out.points.push_back(*m);
         ++out.edge_points;
     }
@@ -110,7 +111,7 @@ void place_corner_points(const Mesh& mesh, const Connectivity& c,
             ++out.refused_by_spike_test;
             continue;
         }
-        out.corner_point[f] = static_cast<Index>(out.points.size());
+        out.slots.corner_point[f] = static_cast<Index>(out.points.size());
         out.points.push_back(*m);
         ++out.corner_points;
     }
@@ -127,8 +128,8 @@ SharpPoints place_sharp_points(const Mesh& mesh, const Connectivity& connectivit
         throw InvalidInput("spike angle must lie in (0, 180] degrees");
     }
     SharpPoints out;
-    out.edge_point.assign(connectivity.twin.size(), kNoIndex);
-    out.corner_point.assign(mesh.face_count(), kNoIndex);
+    out.slots.edge_point.assign(connectivity.twin.size(), kNoIndex);
+    out.slots.corner_point.assign(mesh.face_count(), kNoIndex);
     place_edge_points(mesh, connectivity, bands, feature_normals, out);
     place_corner_points(mesh, connectivity, face_normals, bands, feature_normals,
                         options.spike_angle_deg, out);
