@@ -23,10 +23,11 @@ inline constexpr const char* kBatchHelp =
     "restores every .stl, .obj, .ply and .off file named or in the folder (extensions in any "
     "letter case; --recursive descends into subfolders), --jobs at once with one thread each. "
     "Each output keeps its input's name and subfolder under OUTDIR; --report, --segments and "
-    "--html then name folders too and receive NAME.json, NAME.segments.ply and NAME.html. An "
-    "output folder equal to an input folder is refused. A file that fails is reported with its "
-    "reason, nothing is written for it, and the batch goes on; a table in input order ends the "
-    "run, and the exit code is the worst of the files' (2 if any input was bad).";
+    "--html (in builds with the viewer) then name folders too and receive NAME.json, "
+    "NAME.segments.ply and NAME.html. An output folder equal to an input folder is refused. A "
+    "file that fails is reported with its reason, nothing is written for it, and the batch goes "
+    "on; a table in input order ends the run, and the exit code is the worst of the files' (2 if "
+    "any input was bad).";
 
 /// Adds --jobs and --recursive.
 void add_batch_options(CLI::App& command, BatchSettings& settings);
