@@ -102,6 +102,17 @@ TEST_F(BatchCli, AllGoodExitsZero) {
     EXPECT_EQ(files_under("out"), (std::set<std::string>{"deep.stl"}));
 }
 
+TEST_F(BatchCli, ExitCodeIsTheWorstOfTheFiles) {
+    // A folder where good.stl's output should go: it cannot be written (exit 3), the broken
+    // file is bad input (exit 2), Upper.STL is restored.
+    fs::create_directories(dir_ / "out" / "good.stl");
+    const CliRun run = restore(path("in") + " -o " + path("out"));
+    EXPECT_EQ(run.exit_code, 3) << run.stderr_text;
+    EXPECT_NE(at(run.stderr_text, "failed (exit 3)"), std::string::npos) << run.stderr_text;
+    EXPECT_NE(at(run.stderr_text, "failed (exit 2)"), std::string::npos) << run.stderr_text;
+    EXPECT_EQ(files_under("out"), (std::set<std::string>{"Upper.STL"}));
+}
+
 TEST_F(BatchCli, RefusesAnOutputFolderEqualToTheInputFolder) {
     const std::set<std::string> before = files_under("in");
     for (const std::string& output : {path("in"), path("in") + "/", path("in/sub/..")}) {
