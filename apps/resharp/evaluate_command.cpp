@@ -1,21 +1,18 @@
 // `resharp evaluate`: scores a restored mesh against the simulator's oracle and the exact
 // surface (design.md §5, docs/results.md). A thin layer over resharp::eval.
 
-#include <array>
-#include <cmath>
-#include <cstdio>
 #include <iostream>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
-#include <unordered_map>
 
 #include "commands.h"
 #include "resharp/core/errors.h"
 #include "resharp/core/stage_timer.h"
 #include "resharp/eval/detection.h"
+#include "resharp/eval/evaluation_files.h"
 #include "resharp/eval/ideal_points.h"
 #include "resharp/eval/miss_causes.h"
 #include "resharp/eval/oracle_restoration.h"
@@ -24,7 +21,6 @@
 #include "resharp/eval/validity.h"
 #include "resharp/io/atomic_file.h"
 #include "resharp/io/mesh_io.h"
-#include "resharp/io/ply.h"
 #include "resharp/pipeline/restore.h"
 #include "resharp/sim/gcode.h"
 #include "resharp/sim/job.h"
@@ -49,108 +45,6 @@ struct EvaluateArguments {
     eval::SurfaceMetricsOptions surface;
     bool quiet = false;
 };
-
-/// Positions as keys: binary STL holds floats, the oracle doubles, so both sides are keyed by
-/// their float rounding (two vertices of a grid mesh are never that close).
-struct PositionKey {
-    std::array<float, 3> c;
-    bool operator==(const PositionKey&) const = default;
-};
-struct PositionHash {
-    std::size_t operator()(const PositionKey& k) const {
-        std::size_t h = 0;
-        for (float f : k.c) h = h * 1000003u ^ std::hash<float>()(f);
-        return h;
-    }
-};
-PositionKey key_of(const Vec3& p) {
-    return {{static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())}};
-}
-
-using PositionIndex = std::unordered_map<PositionKey, Index, PositionHash>;
-
-PositionIndex index_positions(const std::vector<Vec3>& points) {
-    PositionIndex index;
-    for (std::size_t i = 0; i < points.size(); ++i) index.emplace(key_of(points[i]), Index(i));
-    return index;
-}
-
-const std::vector<double>& property(const io::PlyMesh& ply, const char* name,
-                                    const std::string& path) {
-    const std::vector<double>* values = ply.vertex_property(name);
-    if (!values) throw ReadError(path, std::string("no vertex property '") + name + "'");
-    return *values;
-}
-
-/// The oracle's normal and surface for every vertex of `input`, matched by position.
-eval::Oracle read_oracle(const std::string& path, const Mesh& input) {
-    const io::PlyMesh ply = io::read_ply_with_properties(path);
-    const auto &nx = property(ply, "nx", path), &ny = property(ply, "ny", path),
-               &nz = property(ply, "nz", path), &surface = property(ply, "surface", path);
-    const PositionIndex index = index_positions(ply.soup.points);
-    eval::Oracle oracle;
-    for (std::size_t v = 0; v < input.vertex_count(); ++v) {
-        const auto it = index.find(key_of(input.positions[v]));
-        if (it == index.end()) {
-            std::ostringstream s;
-            s << "input vertex " << v << " is not in the oracle " << path
-              << " (the oracle must come from the same simulation as the input)";
-            throw InvalidInput(s.str());
-        }
-        const Index o = it->second;
-        oracle.normals.push_back(Vec3(nx[o], ny[o], nz[o]).normalized());
-        oracle.surfaces.push_back(static_cast<std::int32_t>(surface[o]));
-    }
-    return oracle;
-}
-
-/// A restored mesh read from a file, renumbered so that it starts with the input's vertices
-/// (matched by position) and the new ones follow in the order the faces first use them.
-Mesh read_restored(const std::string& path, const Mesh& input) {
-    const Mesh read = weld(io::read_mesh(path));
-    const PositionIndex input_index = index_positions(input.positions);
-    std::vector<Index> renumber(read.vertex_count());
-    Mesh out{input.positions, {}};
-    std::vector<bool> seen(input.vertex_count(), false);
-    for (std::size_t v = 0; v < read.vertex_count(); ++v) {
-        const auto it = input_index.find(key_of(read.positions[v]));
-        if (it != input_index.end()) {
-            renumber[v] = it->second;
-            seen[it->second] = true;
-        } else {
-            renumber[v] = static_cast<Index>(out.positions.size());
-            out.positions.push_back(read.positions[v]);
-        }
-    }
-    for (std::size_t v = 0; v < seen.size(); ++v) {
-        if (!seen[v]) {
-            throw InvalidInput(path + ": input vertex " + std::to_string(v) +
-                               " is missing from the restored mesh");
-        }
-    }
-    for (const Triangle& t : read.triangles) {
-        out.triangles.push_back({renumber[t[0]], renumber[t[1]], renumber[t[2]]});
-    }
-    return out;
-}
-
-/// Face roles read back from `resharp restore --segments` (face colours, segments.cpp).
-std::vector<BandRole> read_segment_roles(const std::string& path, const Mesh& input) {
-    const io::PlyMesh ply = io::read_ply_with_properties(path);
-    const auto *r = ply.face_property("red"), *g = ply.face_property("green"),
-               *b = ply.face_property("blue");
-    if (!r || !g || !b) throw ReadError(path, "no face colours (red, green, blue)");
-    if (r->size() != input.face_count()) {
-        throw InvalidInput(path + ": face count differs from the input's");
-    }
-    std::vector<BandRole> roles(r->size(), BandRole::None);
-    for (std::size_t f = 0; f < roles.size(); ++f) {
-        const std::array<double, 3> c{(*r)[f], (*g)[f], (*b)[f]};
-        if (c == std::array<double, 3>{255, 210, 0}) roles[f] = BandRole::Edge;
-        if (c == std::array<double, 3>{230, 0, 230}) roles[f] = BandRole::Corner;
-    }
-    return roles;
-}
 
 json to_json(const eval::EdgeMetrics& e) {
     return {{"exact_edge_samples", e.exact_edge_samples},
@@ -211,9 +105,9 @@ struct Restored {
 Restored obtain_restored(const EvaluateArguments& args, const Mesh& input,
                          const eval::Oracle& oracle) {
     if (!args.restore) {
-        Restored r{read_restored(args.output, input), {}, "none"};
+        Restored r{eval::read_restored(args.output, input), {}, "none"};
         if (!args.segments.empty()) {
-            r.segmentation.face_role = read_segment_roles(args.segments, input);
+            r.segmentation.face_role = eval::read_segment_roles(args.segments, input.face_count());
             r.detection_source = "segments file (face colours)";
         }
         return r;
@@ -254,7 +148,7 @@ void run_evaluate(EvaluateArguments args) {
     args.restoration.pitch = args.surface.pitch = h;
 
     const Mesh input = weld(io::read_mesh(args.input));
-    const eval::Oracle oracle = read_oracle(args.oracle, input);
+    const eval::Oracle oracle = eval::read_oracle(args.oracle, input);
     const Restored restored = obtain_restored(args, input, oracle);
     const Mesh& output = restored.mesh;
     eval::check_output_extends_input(input, output);

@@ -1,6 +1,10 @@
 #include "segments.h"
 
 #include <cmath>
+#include <string>
+
+#include "resharp/core/errors.h"
+#include "resharp/io/ply.h"
 
 namespace resharp::cli {
 namespace {
@@ -47,6 +51,32 @@ io::Rgb patch_color(Index patch) {
     return {channel(r), channel(g), channel(b)};
 }
 
+/// The colours of one element kind of a --segments file, which must be one per element.
+std::vector<io::Rgb> colors_of(const io::PlyMesh& ply, bool is_vertex, std::size_t count,
+                               const std::string& path) {
+    const char* what = is_vertex ? "vertex" : "face";
+    auto channel = [&](const char* name) {
+        const auto* values = is_vertex ? ply.vertex_property(name) : ply.face_property(name);
+        if (values == nullptr) {
+            throw ReadError(path, std::string("no ") + what +
+                                      " colours: not a file written by resharp restore --segments");
+        }
+        if (values->size() != count) {
+            throw ReadError(path, std::to_string(values->size()) + " " + what +
+                                      " colours for the " + std::to_string(count) + " " + what +
+                                      "s of the input: segments of another mesh");
+        }
+        return values;
+    };
+    const auto *red = channel("red"), *green = channel("green"), *blue = channel("blue");
+    std::vector<io::Rgb> colors(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        colors[i] = {static_cast<std::uint8_t>((*red)[i]), static_cast<std::uint8_t>((*green)[i]),
+                     static_cast<std::uint8_t>((*blue)[i])};
+    }
+    return colors;
+}
+
 }  // namespace
 
 SegmentLayers segment_layers(const Segmentation& s) {
@@ -65,28 +95,23 @@ SegmentColors color_segments(const SegmentLayers& layers) {
     colors.face.reserve(layers.face_role.size());
     for (std::size_t f = 0; f < layers.face_role.size(); ++f) {
         if (layers.face_role[f] == BandRole::Corner)
-            colors.face.push_back(kCornerTriangleColor);
+            colors.face.push_back(eval::kCornerTriangleColor);
         else if (layers.face_role[f] == BandRole::Edge)
-            colors.face.push_back(kEdgeTriangleColor);
+            colors.face.push_back(eval::kEdgeTriangleColor);
         else
             colors.face.push_back(layers.patch_color[f]);
     }
     return colors;
 }
 
-SegmentLayers layers_from_colors(std::span<const io::Rgb> vertex, std::span<const io::Rgb> face) {
-    SegmentLayers layers;
-    layers.is_edge_vertex.reserve(vertex.size());
+SegmentLayers read_segment_layers(const std::filesystem::path& path, const Mesh& input) {
+    const io::PlyMesh ply = io::read_ply_with_properties(path);
+    const std::vector<io::Rgb> vertex = colors_of(ply, true, input.vertex_count(), path.string());
+    const std::vector<io::Rgb> face = colors_of(ply, false, input.face_count(), path.string());
+    SegmentLayers layers{.face_role = eval::decode_segment_roles(ply, path.string(), face.size())};
     for (const io::Rgb& c : vertex) layers.is_edge_vertex.push_back(c == kEdgeVertexColor);
-    layers.face_role.reserve(face.size());
-    layers.patch_color.reserve(face.size());
-    for (const io::Rgb& c : face) {
-        const BandRole role = c == kCornerTriangleColor ? BandRole::Corner
-                              : c == kEdgeTriangleColor ? BandRole::Edge
-                                                        : BandRole::None;
-        layers.face_role.push_back(role);
-        layers.patch_color.push_back(role == BandRole::None ? c : kBandFace);
-    }
+    for (std::size_t f = 0; f < face.size(); ++f)
+        layers.patch_color.push_back(layers.face_role[f] == BandRole::None ? face[f] : kBandFace);
     return layers;
 }
 

@@ -1,19 +1,19 @@
 #pragma once
 /// Colours for `resharp restore --segments` and the viewer: what each segmentation found.
 
-#include <span>
+#include <filesystem>
 #include <vector>
 
+#include "resharp/eval/evaluation_files.h"  // the edge and corner triangle colours
 #include "resharp/io/attributes.h"
 #include "resharp/pipeline/restore.h"
 
 namespace resharp::cli {
 
-/// The highlight colours, shared by the PLY file and the viewer page.
+/// The vertex colours, shared by the PLY file and the viewer page. Edge and corner triangles
+/// are eval::kEdgeTriangleColor and eval::kCornerTriangleColor, which `evaluate` reads back.
 inline constexpr io::Rgb kEdgeVertexColor{220, 40, 30};
 inline constexpr io::Rgb kPlainVertexColor{200, 200, 200};
-inline constexpr io::Rgb kEdgeTriangleColor{255, 210, 0};
-inline constexpr io::Rgb kCornerTriangleColor{230, 0, 230};
 
 /// What the segmentation found on the input's elements, one layer per thing a viewer toggles.
 struct SegmentLayers {
@@ -34,9 +34,11 @@ SegmentLayers segment_layers(const Segmentation& segmentation);
 /// The layers as one colour per element (the PLY file of --segments).
 SegmentColors color_segments(const SegmentLayers& layers);
 
-/// The layers back from the colours of a --segments file: edge vertices, edge and corner
-/// triangles by their highlight colour, every other face colour taken as its patch's.
-/// Takes #V vertex and #F face colours; gives layers of the same sizes.
-SegmentLayers layers_from_colors(std::span<const io::Rgb> vertex, std::span<const io::Rgb> face);
+/// The layers of the --segments file at `path` written for `input` (the welded input itself,
+/// so its #V vertices and #F faces are the input's, in order): edge vertices and edge and
+/// corner triangles by their highlight colours, every other face colour taken as its patch's.
+/// \throws ReadError naming the file if it cannot be read or has no colours, or its counts are
+/// not the input's (segments of another mesh); ParseError as read_ply_with_properties.
+SegmentLayers read_segment_layers(const std::filesystem::path& path, const Mesh& input);
 
 }  // namespace resharp::cli

@@ -6,7 +6,6 @@
 #include "report_json.h"
 #include "resharp/core/errors.h"
 #include "resharp/io/mesh_io.h"
-#include "resharp/io/ply.h"
 #include "resharp/pipeline/restore.h"
 #include "segments.h"
 #include "viewer/page.h"
@@ -20,38 +19,6 @@ struct ViewArguments {
     std::string segments;
     std::string output;
 };
-
-/// The colours of one element kind of a --segments file, which must be one per element.
-std::vector<io::Rgb> colors_of(const io::PlyMesh& ply, bool is_vertex, std::size_t count,
-                               const std::string& path) {
-    const auto* red = is_vertex ? ply.vertex_property("red") : ply.face_property("red");
-    const auto* green = is_vertex ? ply.vertex_property("green") : ply.face_property("green");
-    const auto* blue = is_vertex ? ply.vertex_property("blue") : ply.face_property("blue");
-    const char* what = is_vertex ? "vertex" : "face";
-    if (red == nullptr || green == nullptr || blue == nullptr) {
-        throw ReadError(path, std::string("no ") + what +
-                                  " colours: not a file written by resharp restore --segments");
-    }
-    if (red->size() != count) {
-        throw ReadError(path, std::to_string(red->size()) + " " + what + " colours for the " +
-                                  std::to_string(count) + " " + what +
-                                  "s of the input: segments of another mesh");
-    }
-    std::vector<io::Rgb> colors(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        colors[i] = {static_cast<std::uint8_t>((*red)[i]), static_cast<std::uint8_t>((*green)[i]),
-                     static_cast<std::uint8_t>((*blue)[i])};
-    }
-    return colors;
-}
-
-/// The layers of a --segments file, on `input`'s elements. The file holds the welded input
-/// itself, so its vertices and faces are the input's in order.
-SegmentLayers read_segments(const std::string& path, const Mesh& input) {
-    const io::PlyMesh ply = io::read_ply_with_properties(path);
-    return layers_from_colors(colors_of(ply, true, input.vertex_count(), path),
-                              colors_of(ply, false, input.face_count(), path));
-}
 
 nlohmann::json mesh_numbers(const Mesh& mesh) {
     return {{"vertices", mesh.vertex_count()}, {"triangles", mesh.face_count()}};
@@ -76,7 +43,7 @@ void run_view(const ViewArguments& args) {
     }
     std::optional<SegmentLayers> layers;
     if (!args.segments.empty())
-        layers = read_segments(args.segments, input);
+        layers = read_segment_layers(args.segments, input);
     else if (result)
         layers = segment_layers(result->segmentation);
 

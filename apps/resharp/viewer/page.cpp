@@ -8,6 +8,7 @@
 
 #include "assets.h"
 #include "resharp/core/errors.h"
+#include "resharp/eval/position_index.h"
 #include "resharp/mesh/connectivity.h"
 #include "resharp/mesh/geometry.h"
 
@@ -16,21 +17,14 @@ namespace {
 
 using Bytes = std::vector<std::uint8_t>;
 
-bool position_less(const Vec3& a, const Vec3& b) {
-    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
-}
-
-/// Per restored vertex (#V restored): 1 where its position is no input vertex's. By position,
-/// not by index, so that a restored mesh read back from a file (STL keeps no vertex order)
-/// works as well as restore()'s own result.
+/// Per restored vertex (#V restored): 1 where its position is no input vertex's, to float
+/// precision. By position, not by index, so that a restored mesh read back from a file (STL
+/// keeps no vertex order, and only floats) works as well as restore()'s own result.
 std::vector<std::uint8_t> new_points(const Mesh& input, const Mesh& restored) {
-    std::vector<Vec3> sorted = input.positions;
-    std::sort(sorted.begin(), sorted.end(), position_less);
+    const eval::PositionIndex index(input.positions);
     std::vector<std::uint8_t> is_new(restored.vertex_count());
-    for (std::size_t v = 0; v < is_new.size(); ++v) {
-        is_new[v] =
-            !std::binary_search(sorted.begin(), sorted.end(), restored.positions[v], position_less);
-    }
+    for (std::size_t v = 0; v < is_new.size(); ++v)
+        is_new[v] = !index.find(restored.positions[v]).has_value();
     return is_new;
 }
 
@@ -143,8 +137,8 @@ std::string meta_json(const PageContent& content, std::size_t shared) {
         {"segments", content.segments != nullptr},
         {"colors",
          {{"edge_vertex", rgb_json(cli::kEdgeVertexColor)},
-          {"edge_triangle", rgb_json(cli::kEdgeTriangleColor)},
-          {"corner_triangle", rgb_json(cli::kCornerTriangleColor)}}},
+          {"edge_triangle", rgb_json(eval::kEdgeTriangleColor)},
+          {"corner_triangle", rgb_json(eval::kCornerTriangleColor)}}},
         {"input",
          {{"vertices", content.input->vertex_count()}, {"triangles", content.input->face_count()}}},
         {"restored",

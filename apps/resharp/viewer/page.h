@@ -25,7 +25,7 @@ struct PageContent {
 };
 
 /// The restored sharp edges to draw: edges of `restored` with at least one end at a new point
-/// (a position that is no vertex of `input`) whose two faces meet at more than
+/// (a position that is no vertex of `input`, to float precision) whose two faces meet at more than
 /// `min_dihedral_deg`. That is the chain through the inserted points, without the edges that fan
 /// out from each point into the faces it split (those lie flat). Gives vertex pairs of
 /// `restored`, each edge once, in order of its first half-edge.

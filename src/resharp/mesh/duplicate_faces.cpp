@@ -27,28 +27,24 @@ bool has_defective_edge(const Connectivity& c, Index f) {
     return false;
 }
 
-/// The faces whose three half-edges all have their twin in one other face: on a manifold edge
-/// set, the only way two faces can be opposite.
-std::size_t count_manifold_opposite_pairs(const Connectivity& c, std::size_t face_count) {
-    std::size_t pairs = 0;
-    for (Index f = 0; f < face_count; ++f) {
-        const Index t0 = c.twin[3 * f], t1 = c.twin[3 * f + 1], t2 = c.twin[3 * f + 2];
-        if (t0 == kNoIndex || t1 == kNoIndex || t2 == kNoIndex) continue;
-        const Index g = face_of(t0);
-        pairs += g > f && face_of(t1) == g && face_of(t2) == g;
-    }
-    return pairs;
+/// Whether face f's three half-edges all have their twin in one later face: on manifold
+/// edges, the only way two faces can be opposite (counted once, from the earlier face).
+bool starts_manifold_opposite_pair(const Connectivity& c, Index f) {
+    const Index t0 = c.twin[3 * f], t1 = c.twin[3 * f + 1], t2 = c.twin[3 * f + 2];
+    if (t0 == kNoIndex || t1 == kNoIndex || t2 == kNoIndex) return false;
+    const Index g = face_of(t0);
+    return g > f && face_of(t1) == g && face_of(t2) == g;
 }
 
 }  // namespace
 
 DuplicateFaces find_duplicate_faces(const Mesh& mesh, const Connectivity& connectivity) {
     DuplicateFaces out;
-    out.opposite_pairs = count_manifold_opposite_pairs(connectivity, mesh.face_count());
     std::vector<std::pair<FaceKey, Index>> candidates;
-    for (Index f = 0; f < mesh.face_count(); ++f) {
+    for (Index f = 0; f < mesh.face_count(); ++f) {  // one pass: a clean mesh costs only this
+        out.opposite_pairs += starts_manifold_opposite_pair(connectivity, f);
         const Triangle& t = mesh.triangles[f];
-        if (!has_repeated_vertex(t) && has_defective_edge(connectivity, f))
+        if (has_defective_edge(connectivity, f) && !has_repeated_vertex(t))
             candidates.emplace_back(key_of(t), f);
     }
     if (candidates.empty()) return out;

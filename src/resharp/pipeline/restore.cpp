@@ -126,6 +126,16 @@ bool is_sound_split(const InputSurface& input, const BandClassification& bands,
     return true;
 }
 
+/// Invariant of the split: it adds no boundary, non-manifold or inconsistent edge (every edge
+/// point splits both faces of its edge; no point lies on a defective edge).
+bool adds_no_open_or_nonmanifold_edge(const InputSurface& input, const SplitMesh& split) {
+    const MeshDiagnostics before = diagnose(input.mesh, input.connectivity);
+    const MeshDiagnostics after = diagnose(split.mesh, build_connectivity(split.mesh));
+    return after.boundary_edges <= before.boundary_edges &&
+           after.nonmanifold_edges <= before.nonmanifold_edges &&
+           after.inconsistent_edges <= before.inconsistent_edges;
+}
+
 }  // namespace
 
 Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const RestoreOptions& options) {
@@ -177,14 +187,17 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
         r.guard.refused_by_quality += guarded.report.refused_by_quality;
         r.guard.refused_by_guard += guarded.report.refused_by_guard;
         r.guard.repairs += guarded.report.repairs;
-        clock.run(Stage::Split,
-                  [&] { r.output = split_faces(input.mesh, r.points.points, guarded.accepted); });
+        clock.run(Stage::Split, [&] {
+            r.output = {};  // the last round's split goes first: one alive at a time
+            r.output = split_faces(input.mesh, r.points.points, guarded.accepted);
+        });
         HarmReport harm;
         clock.run(Stage::HarmCheck, [&] { harm = check_harm(input, r.output, options.harm); });
         ++r.rounds;
         if (round == 0) r.first_harm = harm;
         if (harm.is_harmless()) {
             RESHARP_EXPENSIVE_ASSERT(is_sound_split(input, bands, r.output));
+            RESHARP_EXPENSIVE_ASSERT(adds_no_open_or_nonmanifold_edge(input, r.output));
             return r;
         }
         const std::size_t before = r.undone_points;
@@ -210,21 +223,27 @@ public:
         const StageTimer building;
         connectivity = build_connectivity(input_);
         report_.input = diagnose(input_, connectivity);
-        if (options_.repair.remove_duplicate_faces) {
+        if (options_.repair.remove_duplicate_faces && report_.input.duplicate_faces > 0) {
             duplicates = find_duplicate_faces(input_, connectivity);
         }
         report_.duplicate_faces_removed = duplicates.removed;
         report_.opposite_face_pairs = duplicates.opposite_pairs;
         const Mesh working = duplicates.removed > 0 ? keep_faces(input_, duplicates.kept) : Mesh{};
         const Mesh& mesh = duplicates.removed > 0 ? working : input_;
-        if (duplicates.removed > 0) connectivity = build_connectivity(mesh);
+        if (duplicates.removed > 0) {
+            connectivity = {};  // the input's goes first: one connectivity alive at a time
+            connectivity = build_connectivity(mesh);
+        }
         const auto building_time = building.elapsed();
 
-        const Detection detection = detect_bands(mesh, std::move(connectivity), options_);
+        Detection detection = detect_bands(mesh, std::move(connectivity), options_);
         add_times(detection.stage_time);
         report_.stage_time[static_cast<std::size_t>(Stage::MeshBuilding)] += building_time;
         record(detection);
         if (options_.keep_segmentation) keep(detection, duplicates);
+        // What the rest does not read goes before the rest allocates (peak memory).
+        detection.edges = {};
+        detection.features = {};
 
         BandRestoration restored = restore_bands(detection.surface(mesh), detection.bands,
                                                  detection.feature_normals, options_);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "resharp/core/assert.h"
 #include "resharp/core/errors.h"
@@ -74,11 +75,9 @@ public:
           first_(output_ranges(output, input.mesh.face_count())),
           split_(split_faces()),
           number_(numbers_of_split_faces()),
-          blamed_(input.mesh.face_count(), 0) {
-        if (options.check_crossings) {
-            nearby_.emplace(input.mesh, input.connectivity, split_, number_, describe_split());
-        }
-    }
+          blamed_(input.mesh.face_count(), 0),
+          check_crossings_(options.check_crossings),
+          split_boxes_(check_crossings_ ? split_boxes() : std::vector<Box3>{}) {}
 
     HarmReport run() {
         std::vector<FaceVerdict> verdicts(split_.size());
@@ -135,7 +134,7 @@ private:
             verdict.turned += is_turned(o, n, scratch);
             verdict.folded += is_folded(f, o, n);
         }
-        if (nearby_) verdict.crossing += count_crossing_pieces(f);
+        if (check_crossings_) verdict.crossing += count_crossing_pieces(f, scratch.faces);
         return verdict;
     }
 
@@ -247,8 +246,10 @@ private:
         const Triangle& t = output_.mesh.triangles[o];
         for (int k = 0; k < 3; ++k) {
             const Index across = output_face_across(f, o, t[(k + 1) % 3], t[k]);
-            if (across == kNoIndex || n.dot(output_normal(across)) >= min_fold_cosine_) continue;
+            if (across == kNoIndex) continue;
             const Index g = output_.source_face[across];
+            const Vec3 other = is_split(g) ? output_normal(across) : input_.normals.face[g];
+            if (n.dot(other) >= min_fold_cosine_) continue;
             const bool input_folded =
                 g != f && input_.normals.face[f].dot(input_.normals.face[g]) < min_fold_cosine_;
             if (!input_folded) return true;
@@ -280,30 +281,45 @@ private:
         return found;
     }
 
-    /// (c) How many pieces of split face f meet another of its pieces or an output face of a
-    /// nearby input face. A split face before f already checked its pieces against f's (the
-    /// nearby lists are symmetric); a crossing with another split face blames it too. Faces
-    /// sharing an edge are left to the fold check (b).
-    std::uint32_t count_crossing_pieces(Index f) const {
-        const double tolerance = kTouchRatio * std::sqrt(split_box(f).sizes().squaredNorm());
+    /// (c) How many pieces of split face f meet another of its pieces or an output face of an
+    /// input face within two rings of f (the candidates) whose box meets theirs. A split face
+    /// before f already checked its pieces against f's (the relation is symmetric); a crossing
+    /// with another split face blames it too. Faces sharing an edge are left to the fold check
+    /// (b), and faces wholly beyond f's cap plane (see cap_of) cannot reach its pieces.
+    std::uint32_t count_crossing_pieces(Index f, const std::vector<Index>& candidates) const {
+        const Box3& box = split_boxes_[number_[f]];
+        const double tolerance = kTouchRatio * std::sqrt(box.sizes().squaredNorm());
+        const Cap cap = cap_of(f, tolerance);
         std::array<IdTriangle, 6> pieces;
         std::array<bool, 6> meets{};
         const int count = static_cast<int>(first_[f + 1] - first_[f]);
         for (int i = 0; i < count; ++i) pieces[i] = output_triangle(first_[f] + i);
-        auto meet = [&](const IdTriangle& s, const IdTriangle& t) {
-            return !shares_opposite_edge(s.id, t.id) && triangles_meet(s, t, tolerance);
+        // Pairs sharing an edge are the fold check's.
+        auto needs_test = [&](const Triangle& s, const Triangle& t) {
+            return !shares_opposite_edge(s, t);
         };
         for (int i = 0; i < count; ++i) {
             for (int j = i + 1; j < count; ++j) {
-                if (meet(pieces[i], pieces[j])) meets[i] = meets[j] = true;
+                if (needs_test(pieces[i].id, pieces[j].id) &&
+                    triangles_meet(pieces[i], pieces[j], tolerance)) {
+                    meets[i] = meets[j] = true;
+                }
             }
         }
-        for (Index g : nearby_->of(number_[f])) {
-            if (is_split(g) && g < f) continue;
+        for (Index g : candidates) {
+            if (g == f) continue;
+            if (is_split(g)) {
+                if (g < f || !split_boxes_[number_[g]].intersects(box)) continue;
+            } else if (lies_beyond(cap, f, g) || !input_box(g).intersects(box)) {
+                continue;
+            }
             for (Index other = first_[g]; other < first_[g + 1]; ++other) {
-                const IdTriangle them = output_triangle(other);
+                const Triangle& ids = output_.mesh.triangles[other];
+                std::optional<IdTriangle> them;  // made only if a piece needs the test
                 for (int i = 0; i < count; ++i) {
-                    if (!meet(pieces[i], them)) continue;
+                    if (!needs_test(pieces[i].id, ids)) continue;
+                    if (!them) them = output_triangle(other);
+                    if (!triangles_meet(pieces[i], *them, tolerance)) continue;
                     meets[i] = true;
                     if (is_split(g)) {
                         std::atomic_ref<std::uint8_t>(blamed_[g])
@@ -315,6 +331,14 @@ private:
         return static_cast<std::uint32_t>(std::count(meets.begin(), meets.begin() + count, true));
     }
 
+    /// Per split face (in split_ order): the box of its pieces.
+    std::vector<Box3> split_boxes() const {
+        std::vector<Box3> boxes(split_.size());
+        tbb::parallel_for(std::size_t{0}, split_.size(),
+                          [&](std::size_t i) { boxes[i] = split_box(split_[i]); });
+        return boxes;
+    }
+
     /// The box of split face f's output: every piece lies in it.
     Box3 split_box(Index f) const {
         Box3 box;
@@ -323,19 +347,22 @@ private:
         }
         return box;
     }
-
-    /// Each split face as the search for its neighbours sees it: the box of its pieces and,
-    /// when every vertex its pieces add lies clearly to one side of its plane, that plane.
-    std::vector<TouchedFace> describe_split() const {
-        std::vector<TouchedFace> faces(split_.size());
-        tbb::parallel_for(std::size_t{0}, split_.size(),
-                          [&](std::size_t i) { faces[i] = describe(split_[i]); });
-        return faces;
+    Box3 input_box(Index g) const {
+        Box3 box;
+        for (Index v : input_.mesh.triangles[g]) box.extend(input_.mesh.positions[v]);
+        return box;
     }
-    TouchedFace describe(Index f) const {
-        const Box3 box = split_box(f);
-        TouchedFace face{box, Vec3::Zero(), 0.0,
-                         kTouchRatio * std::sqrt(box.sizes().squaredNorm())};
+
+    /// A half-space holding every piece of a split face: n . x >= offset (n zero: none).
+    struct Cap {
+        Vec3 n = Vec3::Zero();
+        double offset = 0.0;
+        double tolerance = 0.0;
+    };
+
+    /// The plane of split face f, turned to the side of the vertices its pieces add, when they
+    /// all lie clearly on one side: the pieces lie in the hull of f and those vertices.
+    Cap cap_of(Index f, double tolerance) const {
         const Vec3& n = input_.normals.face[f];
         const double offset = n.dot(input_.mesh.positions[input_.mesh.triangles[f][0]]);
         int above = 0, below = 0, added = 0;
@@ -343,19 +370,25 @@ private:
             for (Index v : output_.mesh.triangles[o]) {
                 if (v < input_.mesh.vertex_count()) continue;
                 const double height = n.dot(output_.mesh.positions[v]) - offset;
-                above += height > face.tolerance;
-                below += height < -face.tolerance;
+                above += height > tolerance;
+                below += height < -tolerance;
                 ++added;
             }
         }
-        if (above == added) {
-            face.cap_normal = n;
-            face.cap_offset = offset;
-        } else if (below == added) {
-            face.cap_normal = -n;
-            face.cap_offset = -offset;
+        if (above == added) return {n, offset, tolerance};
+        if (below == added) return {-n, -offset, tolerance};
+        return {};
+    }
+
+    /// Whether unsplit face g lies beyond the cap, but for the vertices it shares with f.
+    bool lies_beyond(const Cap& cap, Index f, Index g) const {
+        if (cap.n.isZero(0.0)) return false;
+        const Triangle& own = input_.mesh.triangles[f];
+        for (Index v : input_.mesh.triangles[g]) {
+            if (v == own[0] || v == own[1] || v == own[2]) continue;
+            if (cap.n.dot(input_.mesh.positions[v]) >= cap.offset - cap.tolerance) return false;
         }
-        return face;
+        return true;
     }
 
     const InputSurface& input_;
@@ -365,7 +398,8 @@ private:
     std::vector<Index> split_;   ///< the split input faces, ascending
     std::vector<Index> number_;  ///< per input face (#F): its index in split_, or kNoIndex
     mutable std::vector<std::uint8_t> blamed_;  ///< per input face (#F), set from any thread
-    std::optional<NearbyFaces> nearby_;
+    bool check_crossings_;
+    std::vector<Box3> split_boxes_;  ///< per split face, with the crossing check
 };
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "resharp/restoration/split.h"
 
+#include <algorithm>
+
 #include "resharp/core/assert.h"
 #include "resharp/restoration/pieces.h"
 
@@ -29,8 +31,12 @@ SplitMesh split_faces(const Mesh& mesh, std::span<const Vec3> points, const Poin
     const PieceVertices ids(mesh, points);
     const Index original_count = static_cast<Index>(mesh.vertex_count());
     const std::vector<Index> number = number_used_points(points.size(), slots, original_count);
+    const std::size_t used = static_cast<std::size_t>(
+        std::count_if(number.begin(), number.end(), [](Index n) { return n != kNoIndex; }));
     SplitMesh out;
+    out.mesh.positions.reserve(mesh.vertex_count() + used);  // exact: no doubling on growth
     out.mesh.positions = mesh.positions;
+    out.point_of_new_vertex.reserve(used);
     for (std::size_t i = 0; i < number.size(); ++i) {
         if (number[i] == kNoIndex) continue;
         out.mesh.positions.push_back(points[i]);
