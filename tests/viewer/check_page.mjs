@@ -44,7 +44,9 @@ class Browser {
         this.profile = mkdtempSync(join(tmpdir(), 'resharp-chromium-'));
         this.process = spawn(chromium, [
             '--headless', '--no-sandbox', '--remote-debugging-pipe',
-            // Software WebGL: ANGLE on SwiftShader, which this Chromium only allows when asked.
+            // Software WebGL: ANGLE on SwiftShader. Chromium 156 still falls back to it on its
+            // own, but warns that the automatic fallback is deprecated; the flag opts in, so the
+            // warning goes and a Chromium without the fallback still has WebGL.
             '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
             `--user-data-dir=${this.profile}`, `--window-size=${width},${height}`,
             '--no-first-run', '--no-default-browser-check', '--hide-scrollbars', 'about:blank',
