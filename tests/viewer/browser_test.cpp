@@ -149,5 +149,17 @@ TEST_F(ViewCommand, RefusesSegmentsOfAnotherMeshAndWritesNothing) {
     EXPECT_FALSE(fs::exists(dir_ / "page.html"));
 }
 
+TEST_F(ViewCommand, BatchWritesOnePagePerRestoredFile) {
+    fs::create_directories(dir_ / "in");
+    fs::copy_file(example_mesh(), dir_ / "in" / "part.stl");
+    std::ofstream(dir_ / "in" / "broken.obj") << "v 0 0 0\nf 1 2 3\n";
+    const CliRun run = restore(path("in") + " -o " + path("out") + " --html " + path("pages"));
+    EXPECT_EQ(run.exit_code, 2) << run.stderr_text;
+    ASSERT_TRUE(fs::exists(dir_ / "pages" / "part.html"));
+    EXPECT_FALSE(fs::exists(dir_ / "pages" / "broken.html"));
+    EXPECT_NE(bytes_of(dir_ / "pages" / "part.html").find("id=\"segment-roles\""),
+              std::string::npos);
+}
+
 }  // namespace
 }  // namespace resharp::cli
