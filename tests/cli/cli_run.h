@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -41,6 +42,29 @@ inline CliRun run_shell(const std::string& command, const std::filesystem::path&
     return run;
 }
 
+/// An empty directory of the running test's own, removed again by the destructor. Flat (one
+/// per test, named after the process and the test): ctest runs each test in a process of its
+/// own, and a per-process parent directory would be left behind.
+class ScratchDir {
+public:
+    explicit ScratchDir(const std::string& prefix) {
+        std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        std::replace(name.begin(), name.end(), '/', '_');  // parameterised tests
+        path_ = std::filesystem::temp_directory_path() /
+                (prefix + "_" + std::to_string(::getpid()) + "_" + name);
+        std::filesystem::remove_all(path_);
+        std::filesystem::create_directories(path_);
+    }
+    ~ScratchDir() { std::filesystem::remove_all(path_); }
+    ScratchDir(const ScratchDir&) = delete;
+    ScratchDir& operator=(const ScratchDir&) = delete;
+
+    const std::filesystem::path& path() const { return path_; }
+
+private:
+    std::filesystem::path path_;
+};
+
 #ifdef RESHARP_SOURCE_DIR
 /// The shipped example part (examples/bracket.stl).
 inline std::filesystem::path example_mesh() {
@@ -48,22 +72,10 @@ inline std::filesystem::path example_mesh() {
 }
 #endif
 
-/// A test with a scratch folder of its own, removed afterwards, and `resharp` to run in it.
+/// A test with a ScratchDir of its own (named after its suite) and `resharp` to run in it.
 /// Needs RESHARP_CLI, the path of the executable.
 class CliTest : public ::testing::Test {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        // One flat directory per test: ctest runs each test in a process of its own, and a
-        // per-process parent directory would be left behind empty.
-        dir_ = std::filesystem::temp_directory_path() /
-               (std::string(info->test_suite_name()) + "_" + std::to_string(::getpid()) + "_" +
-                info->name());
-        std::filesystem::remove_all(dir_);
-        std::filesystem::create_directories(dir_);
-    }
-    void TearDown() override { std::filesystem::remove_all(dir_); }
-
     /// Runs `resharp ARGS` through the shell (so `prefix` can set limits).
     CliRun resharp(const std::string& args, const std::string& prefix = "") const {
         return run_shell(prefix + std::string(RESHARP_CLI) + " " + args, dir_ / "stderr.txt");
@@ -88,7 +100,8 @@ protected:
         return s.str();
     }
 
-    std::filesystem::path dir_;
+    ScratchDir scratch_{::testing::UnitTest::GetInstance()->current_test_info()->test_suite_name()};
+    std::filesystem::path dir_ = scratch_.path();
 };
 
 }  // namespace resharp::cli
