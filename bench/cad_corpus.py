@@ -247,6 +247,7 @@ def main():
     else:
         exe = os.path.join(args.build, "resharp")
         os.makedirs(args.scratch, exist_ok=True)
+        commit = git_head(root)  # before the runs: the tree may move while they run
         results = {}
         for part in args.parts:
             results[part] = {}
@@ -256,7 +257,7 @@ def main():
                     str(n): measure(exe, solid, args.scratch, f"{part}_{orientation}_{n}", n)
                     for n in args.cells}
         raw = {"run": {"date": datetime.date.today().isoformat(), "machine": machine(),
-                       "commit": git_head(root), "cells": args.cells},
+                       "commit": commit, "cells": args.cells},
                "results": results}
     if args.raw:
         with open(args.raw, "w") as f:
