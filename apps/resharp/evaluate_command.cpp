@@ -182,6 +182,7 @@ void run_evaluate(EvaluateArguments args) {
     const auto first_order = eval::find_ideal_points(input, oracle, args.ideal);
     const eval::MachinedSolid solid(job.stock, job.tools, path, {.pitch = h});
     args.junctions.solver.pitch = h;
+    args.junctions.smooth_angle_deg = args.ideal.sharp_angle_deg;
     const eval::ExactIdealPoints ideal =
         eval::find_exact_ideal_points(input, oracle, first_order, solid, args.junctions);
     const double junction_seconds = std::chrono::duration<double>(junctions.elapsed()).count();
@@ -197,6 +198,11 @@ void run_evaluate(EvaluateArguments args) {
     json j;
     j["restoration_rate"] = score.rate;
     j["restoration_rate_first_order"] = first.rate;
+    // The input's own rate on the exact junction: the points an input vertex already restores.
+    j["restoration_rate_input"] = score.ideal_edges + score.ideal_corners == 0
+                                      ? 1.0
+                                      : double(score.restored_by_input_vertices) /
+                                            double(score.ideal_edges + score.ideal_corners);
     j["restoration_rate_edges"] = score.rate_edges;
     j["restoration_rate_corners"] = score.rate_corners;
     j["restoration_rate_within_reach"] = score.rate_within_reach;

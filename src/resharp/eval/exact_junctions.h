@@ -42,9 +42,10 @@ struct ExactJunctionOptions {
     double probe_tolerance = 2e-3;
     double probe_normal_angle_deg = 2.0;  ///< largest angle between boundary and surface normal
     /// Degrees: where the boundary beside a junction is another surface within this angle of a
-    /// side's surface (the next move of the same pass, which meets it tangentially), that
-    /// surface continues the side and the junction is solved again with it. Below theta_s.
-    double smooth_angle_deg = 10.0;
+    /// side's surface (the next move of the same pass, which meets it tangentially, or any
+    /// surface meeting it at no sharp junction), that surface continues the side and the
+    /// junction is solved again with it. theta_s (IdealPointOptions::sharp_angle_deg).
+    double smooth_angle_deg = 30.0;
     int max_continuations = 4;  ///< bound on such hand-overs per ideal point
     /// In h: a junction farther than this from its edge's midpoint (corner: from its triangle's
     /// centroid) is Unsolved: another branch of the surfaces' intersection.

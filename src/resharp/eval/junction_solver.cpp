@@ -10,6 +10,9 @@ namespace {
 
 /// Gradients closer to parallel than this (sine of the angle) meet in no single curve.
 constexpr double kMinSine = 1e-6;
+/// The secant slope of lambda is held at or below this: near zero or positive it would send the
+/// step far off (a target near the curve's centre of curvature).
+constexpr double kMaxSlope = -0.1;
 
 /// The largest first-order distance from p to any of the surfaces (value over gradient length).
 template <std::size_t N>
@@ -36,8 +39,13 @@ std::optional<Vec3> edge_junction(const ImplicitSurface& a, const ImplicitSurfac
     const double longest = options.max_step * h;
     Vec3 x = start;
     // Each step either moves x onto both surfaces (the least-norm Newton step) or, once it is
-    // there, along the curve's tangent to the point of that line nearest the target: Newton's
-    // method on the distance, one surface linearisation at a time.
+    // there, along the curve's tangent towards the point nearest the target: Newton's method on
+    // lambda(s) = (target - x(s)) · t(s), the distance's derivative along the curve. Its slope
+    // is -1 on a straight junction; on a curved one it is estimated from the last two steps
+    // (a secant), without which the steps overshoot by the ratio of the target's distance to
+    // the curve's radius and diverge beyond twice it.
+    double last_lambda = 0.0, last_step = 0.0;
+    Vec3 last_t = Vec3::Zero();
     for (int k = 0; k < options.max_iterations; ++k) {
         const std::array<SurfaceValue, 2> f{a.evaluate(x), b.evaluate(x)};
         const Vec3 tangent = f[0].gradient.cross(f[1].gradient);
@@ -52,10 +60,18 @@ std::optional<Vec3> edge_junction(const ImplicitSurface& a, const ImplicitSurfac
             x -= clamp_length(j.transpose() * normal.inverse() * values, longest);
             continue;
         }
-        const Vec3 t = tangent.normalized();
+        Vec3 t = tangent.normalized();
+        // Keep the tangent's orientation from step to step, so lambdas compare.
+        if (t.dot(last_t) < 0.0) t = -t;
         const double lambda = (target - x).dot(t);
         if (std::abs(lambda) <= tolerance) return x;
-        x += clamp_length(lambda * t, longest);
+        double slope = -1.0;
+        if (last_step != 0.0) slope = std::min((lambda - last_lambda) / last_step, kMaxSlope);
+        const double step = std::clamp(-lambda / slope, -longest, longest);
+        x += step * t;
+        last_lambda = lambda;
+        last_step = step;
+        last_t = t;
     }
     return std::nullopt;
 }
