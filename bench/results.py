@@ -38,7 +38,7 @@ VARIANTS = [  # (row name, extra evaluate flags)
 ]
 EDGE_SEG = ["curvature", "edge segmentation"]
 FEATURE_SEG = ["feature segmentation"]
-RESTORATION = ["classification", "feature normals", "sharp points", "split"]
+RESTORATION = ["classification", "feature normals", "sharp points", "guard", "split", "harm check"]
 CAUSES = ["beyond_chord", "no_feature_patch", "same_patch", "no_edge_vertex", "corner_not_detected",
           "not_detected", "not_inserted", "placed_far"]
 

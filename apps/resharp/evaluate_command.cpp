@@ -146,7 +146,11 @@ Restored obtain_restored(const EvaluateArguments& args, const Mesh& input,
     options.edges.feature = args.feature;
     if (args.paper) options = paper_variant(options);
     options.keep_segmentation = true;
-    if (args.exact_normals) options.normal_override = oracle.normals;
+    if (args.exact_normals) {
+        eval::ExactNormalRestoration r = eval::restore_with_exact_normals(input, oracle, options);
+        if (!args.output.empty()) io::write_mesh(args.output, r.mesh);
+        return {std::move(r.mesh), std::move(r.segmentation), "restore() with exact normals"};
+    }
     RestoreResult result = restore(input, options);
     if (!args.output.empty()) io::write_mesh(args.output, result.mesh);
     return {std::move(result.mesh), std::move(result.segmentation), "restore() in process"};

@@ -74,7 +74,19 @@ nlohmann::json report_to_json(const RestoreReport& r) {
           {"refused_missing_normal", r.refused_missing_normal},
           {"refused_by_quality", r.refused_by_quality},
           {"refused_by_guard", r.refused_by_guard},
+          {"guard_repairs", r.guard_repairs},
           {"split_triangles", r.split_triangles}}},
+        {"harm_check",
+         {{"turned", r.harm_turned},
+          {"folded", r.harm_folded},
+          {"crossing", r.harm_crossing},
+          {"rounds", r.harm_rounds},
+          {"undone_points", r.undone_points}}},
+        {"mesh_repair",
+         {{"duplicate_faces_removed", r.duplicate_faces_removed},
+          {"opposite_face_pairs", r.opposite_face_pairs}}},
+        {"output_unchanged", r.output_unchanged},
+        {"unchanged_reason", std::string(r.unchanged_reason)},
         {"time_seconds", {{"stages", stages}, {"total", seconds(r.total_time)}}},
     };
 }
@@ -82,9 +94,9 @@ nlohmann::json report_to_json(const RestoreReport& r) {
 std::string summarize(const RestoreReport& r, const std::string& input, const std::string& output) {
     const double edge_time = seconds(r.time(Stage::Curvature) + r.time(Stage::EdgeSegmentation));
     const double feature_time = seconds(r.time(Stage::FeatureSegmentation));
-    const double restore_time =
-        seconds(r.time(Stage::Classification) + r.time(Stage::FeatureNormals) +
-                r.time(Stage::SharpPoints) + r.time(Stage::Split));
+    const double restore_time = seconds(
+        r.time(Stage::Classification) + r.time(Stage::FeatureNormals) + r.time(Stage::SharpPoints) +
+        r.time(Stage::Guard) + r.time(Stage::Split) + r.time(Stage::HarmCheck));
     std::ostringstream text;
     text << std::fixed << std::setprecision(3);
     text << "resharp: " << input << " -> " << output << ": " << r.input_triangles
@@ -95,10 +107,17 @@ std::string summarize(const RestoreReport& r, const std::string& input, const st
          << " corner points (refused: " << r.refused_by_flip_test << " by the flip test, "
          << r.refused_by_spike_test << " by the spike test, " << r.refused_by_quality
          << " for quality, " << r.refused_by_guard << " by the guard, " << r.refused_missing_normal
-         << " without a feature normal). Input defects: " << describe_defects(r.input) << ". Time "
-         << seconds(r.total_time) << " s (mesh " << seconds(r.time(Stage::MeshBuilding))
-         << ", edge segmentation " << edge_time << ", feature segmentation " << feature_time
-         << ", restoration " << restore_time << ").\n";
+         << " without a feature normal; " << r.undone_points << " undone by the harm check in "
+         << r.harm_rounds << (r.harm_rounds == 1 ? " round" : " rounds") << ")"
+         << (r.duplicate_faces_removed > 0
+                 ? "; removed " + std::to_string(r.duplicate_faces_removed) + " duplicate faces"
+                 : std::string())
+         << (r.unchanged_reason.empty() ? std::string()
+                                        : "; output unchanged: " + std::string(r.unchanged_reason))
+         << ". Input defects: " << describe_defects(r.input) << ". Time " << seconds(r.total_time)
+         << " s (mesh " << seconds(r.time(Stage::MeshBuilding)) << ", edge segmentation "
+         << edge_time << ", feature segmentation " << feature_time << ", restoration "
+         << restore_time << ").\n";
     return text.str();
 }
 

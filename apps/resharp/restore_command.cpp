@@ -111,10 +111,27 @@ void bind_options(CLI::App& command, RestoreOptions& o) {
                     "corner points are refused when normals around the corner differ more "
                     "(degrees, paper 5.3)")
         ->capture_default_str();
-    command.add_flag("--check-clearance", o.check_clearance,
-                     "test every new piece against the triangles near it and drop points whose "
-                     "pieces would meet one: no self-intersection for certain, at about a third "
-                     "more time");
+    command
+        .add_option("--thin-angle", o.guard.thin_material_angle_deg,
+                    "the guard: pieces joining vertices whose normals differ more (degrees) "
+                    "stand across thin material and must clear both surfaces by a wider margin")
+        ->capture_default_str();
+    command
+        .add_option("--fold-angle", o.harm.fold_angle_deg,
+                    "the harm check: adjacent output faces whose normals differ more (degrees) "
+                    "than their input faces' did are folded, and their points undone")
+        ->capture_default_str();
+    command.add_flag("!--no-crossing-check", o.harm.check_crossings,
+                     "skip the harm check's test of every new piece against the faces near it "
+                     "(faster; a self-intersection is then no longer ruled out)");
+    command
+        .add_option("--harm-rounds", o.max_harm_rounds,
+                    "rounds of guard, split and harm check at most; past them the mesh comes "
+                    "back unchanged")
+        ->capture_default_str();
+    command.add_flag("!--keep-duplicate-faces", o.repair.remove_duplicate_faces,
+                     "keep exact duplicate faces (same vertices, same orientation) instead of "
+                     "removing all but the first copy");
     command
         .add_option("--threads", o.threads,
                     "worker threads, 0 for all cores; the output "

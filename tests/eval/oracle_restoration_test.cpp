@@ -74,5 +74,27 @@ TEST(OracleRestoration, RefusesAnOracleOfAnotherMesh) {
     EXPECT_THROW(oracle_bands(s.mesh, short_oracle), InvalidInput);
 }
 
+// resharp's own detection with the exact normals in place of eq. 5.1's: the drilled plate's
+// hole edges land on their ideal points (the ceiling of the placement step).
+TEST(ExactNormalRestoration, PutsTheDrilledPlateHoleEdgesOnTheirIdealPoints) {
+    const test::SampledShape shape = test::sampled_drilled_plate();
+    const Oracle oracle{shape.exact_normals, shape.surface_ids};
+    const ExactNormalRestoration r = restore_with_exact_normals(shape.mesh, oracle);
+    EXPECT_EQ(r.segmentation.face_role.size(), shape.mesh.face_count());
+    const std::vector<IdealPoint> ideal = find_ideal_points(shape.mesh, oracle);
+    const std::vector<Vec3> fresh(r.mesh.positions.begin() + shape.mesh.vertex_count(),
+                                  r.mesh.positions.end());
+    const std::vector<double> distance = nearest_distances(ideal, fresh, shape.pitch);
+    std::size_t edges = 0, restored = 0;
+    for (std::size_t i = 0; i < ideal.size(); ++i) {
+        if (ideal[i].kind != IdealKind::Edge) continue;
+        ++edges;
+        restored += distance[i] <= 1e-9;
+    }
+    EXPECT_GE(restored, edges * 98 / 100);
+    const Oracle short_oracle{std::vector<Vec3>(3, Vec3::UnitZ()), std::vector<std::int32_t>(3, 0)};
+    EXPECT_THROW(restore_with_exact_normals(shape.mesh, short_oracle), InvalidInput);
+}
+
 }  // namespace
 }  // namespace resharp::eval

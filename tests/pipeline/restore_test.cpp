@@ -154,17 +154,6 @@ TEST(Restore, RotatedBoxRestoresChamfersThatDoNotFollowTheGrid) {
     expect_invariants(shape, o);
 }
 
-TEST(Restore, ExactNormalsPutTheDrilledPlateHoleEdgesOnTheirIdealPoints) {
-    const test::SampledShape shape = test::sampled_drilled_plate();
-    RestoreOptions options;
-    options.normal_override = shape.exact_normals;
-    const Outcome o = restore_shape(shape, options);
-    const std::size_t edges = o.count(eval::IdealKind::Edge);
-    EXPECT_GE(o.restored_within(1e-9, eval::IdealKind::Edge), edges * 98 / 100);
-    EXPECT_THROW(restore(shape.mesh, {.normal_override = std::span(shape.exact_normals).first(3)}),
-                 InvalidInput);
-}
-
 TEST(Restore, SameBytesWhateverTheThreadCount) {
     const test::SampledShape shape = test::sampled_drilled_plate();
     const RestoreResult one = restore(shape.mesh, {.threads = 1});

@@ -20,6 +20,13 @@ public:
     using Error::Error;
 };
 
+/// restore() was asked to stop (RestoreOptions::stop). restore() itself never lets it out: it
+/// returns the input unchanged; the lower-level stage sequences (pipeline/restore.h) throw it.
+class Cancelled : public Error {
+public:
+    using Error::Error;
+};
+
 /// A file could not be opened, read or written. what() starts with the path.
 /// Readers throw ReadError or ParseError, writers WriteError.
 class IoError : public Error {

@@ -5,9 +5,8 @@
 
 #include "resharp/mesh/connectivity.h"
 #include "resharp/mesh/geometry.h"
+#include "resharp/pipeline/restore.h"
 #include "resharp/restoration/feature_normals.h"
-#include "resharp/restoration/sharp_points.h"
-#include "resharp/restoration/split.h"
 
 namespace resharp::eval {
 namespace {
@@ -60,16 +59,28 @@ OracleRestoration restore_from_oracle(const Mesh& mesh, const Oracle& oracle,
     OracleRestoration r;
     r.bands = bands_of(mesh, connectivity, normals.face, oracle, options);
     const FeatureNormals exact = exact_feature_normals(mesh, r.bands, oracle);
-    SharpPoints points =
-        place_sharp_points(mesh, connectivity, normals.face, r.bands, exact.normal);
-    r.refused_by_flip_test = points.refused_by_flip_test;
-    r.refused_by_spike_test = points.refused_by_spike_test;
-    SplitReport split;
-    std::vector<Index> source_face;
-    r.mesh = split_band_triangles(mesh, connectivity, normals.face, exact, normals.vertex, points,
-                                  split, source_face);
-    r.refused_by_split = split.refused_by_quality + split.refused_by_guard;
+    BandRestoration restored =
+        restore_bands({mesh, connectivity, normals}, r.bands, exact, RestoreOptions{});
+    r.refused_by_flip_test = restored.points.refused_by_flip_test;
+    r.refused_by_spike_test = restored.points.refused_by_spike_test;
+    r.refused_by_split = restored.guard.refused_by_quality + restored.guard.refused_by_guard +
+                         restored.undone_points;
+    r.mesh = std::move(restored.output.mesh);
     return r;
+}
+
+ExactNormalRestoration restore_with_exact_normals(const Mesh& mesh, const Oracle& oracle,
+                                                  const RestoreOptions& options) {
+    check_oracle(oracle, mesh);
+    Detection d = detect_bands(mesh, build_connectivity(mesh), options);
+    for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+        if (d.feature_normals.normal[v].isZero(0.0)) continue;
+        d.feature_normals.normal[v] = oracle.normals[v];
+        d.feature_normals.fit_correction_deg[v] = 0.0f;  // exact normals need no margin
+    }
+    BandRestoration restored = restore_bands(d.surface(mesh), d.bands, d.feature_normals, options);
+    return {std::move(restored.output.mesh),
+            {d.edges.is_edge, d.features.vertex_patch, d.features.face_patch, d.bands.face_role}};
 }
 
 }  // namespace resharp::eval

@@ -9,6 +9,7 @@
 
 #include "resharp/eval/ideal_points.h"
 #include "resharp/mesh/mesh.h"
+#include "resharp/pipeline/restore.h"
 #include "resharp/restoration/band_classification.h"
 
 namespace resharp::eval {
@@ -25,13 +26,27 @@ struct OracleRestoration {
     BandClassification bands;               ///< oracle_bands()
     std::size_t refused_by_flip_test = 0;   ///< crossing edges failing eq. 5.4 with exact normals
     std::size_t refused_by_spike_test = 0;  ///< corner triangles failing the spike test
-    std::size_t refused_by_split = 0;       ///< points the split's quality checks and guard dropped
+    /// points the guard refused or the harm check undid
+    std::size_t refused_by_split = 0;
 };
 
 /// Places eq. 5.2 / 5.3 points on oracle_bands() with the oracle's normals at every vertex of
-/// an edge or corner triangle, and splits as restore() does with its default options.
+/// an edge or corner triangle, and restores them as restore() does with its default options
+/// (guard, split and harm check: restore_bands()).
 /// \throws InvalidInput if the oracle does not have one entry per vertex.
 OracleRestoration restore_from_oracle(const Mesh& mesh, const Oracle& oracle,
                                       const IdealPointOptions& options = {});
+
+/// The ceiling of the placement step on resharp's own detection: restore()'s stages with the
+/// oracle's exact normals in place of the feature normals (eq. 5.1) at every vertex that has
+/// one. Gives the restored mesh and the segmentation (as keep_segmentation does); no duplicate
+/// faces are removed (a simulated mesh has none).
+/// \throws InvalidInput if the oracle does not have one entry per vertex, or as restore().
+struct ExactNormalRestoration {
+    Mesh mesh;
+    Segmentation segmentation;
+};
+ExactNormalRestoration restore_with_exact_normals(const Mesh& mesh, const Oracle& oracle,
+                                                  const RestoreOptions& options = {});
 
 }  // namespace resharp::eval

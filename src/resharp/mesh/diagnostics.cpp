@@ -3,38 +3,23 @@
 #include <algorithm>
 
 #include "resharp/core/disjoint_sets.h"
+#include "resharp/mesh/duplicate_faces.h"
 #include "resharp/mesh/geometry.h"
 
 namespace resharp {
 namespace {
 
-/// True for the lowest-numbered half-edge of the undirected edge under h, so that an edge held by
-/// several faces is counted once.
-bool is_first_halfedge_of_edge(const Mesh& mesh, const Connectivity& c, Index h) {
-    const Index a = tail_vertex(mesh, h);
-    const Index b = head_vertex(mesh, h);
-    for (Index g : c.faces_around(a)) {
-        for (Index k = 0; k < 3; ++k) {
-            const Index other = 3 * g + k;
-            if (other >= h) continue;
-            const Index x = tail_vertex(mesh, other);
-            const Index y = head_vertex(mesh, other);
-            if ((x == a && y == b) || (x == b && y == a)) return false;
-        }
+/// The number of distinct undirected edges among the half-edges `halfedges` (as vertex pairs),
+/// by sorting: rings can be huge on collapsed meshes, where searching them would be quadratic.
+std::size_t distinct_edges(const Mesh& mesh, const std::vector<Index>& halfedges) {
+    std::vector<std::pair<Index, Index>> edges;
+    edges.reserve(halfedges.size());
+    for (Index h : halfedges) {
+        const Index a = tail_vertex(mesh, h), b = head_vertex(mesh, h);
+        edges.emplace_back(std::min(a, b), std::max(a, b));
     }
-    return true;
-}
-
-bool has_vertex(const Triangle& t, Index v) { return t[0] == v || t[1] == v || t[2] == v; }
-
-bool is_duplicate_of_earlier(const Mesh& mesh, const Connectivity& c, Index f) {
-    const Triangle& t = mesh.triangles[f];
-    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return false;  // counted as degenerate
-    for (Index g : c.faces_around(t[0])) {
-        if (g >= f) break;  // rings are in increasing face order
-        if (has_vertex(mesh.triangles[g], t[1]) && has_vertex(mesh.triangles[g], t[2])) return true;
-    }
-    return false;
+    std::sort(edges.begin(), edges.end());
+    return static_cast<std::size_t>(std::unique(edges.begin(), edges.end()) - edges.begin());
 }
 
 /// A vertex is manifold when its faces form one fan: turning around it from one face across
@@ -45,6 +30,8 @@ bool is_nonmanifold_vertex(const Mesh& mesh, const Connectivity& c, Index v) {
     const Index first = 3 * ring[0] + corner_of(mesh.triangles[ring[0]], v);  // leaves v
     std::size_t reached = 1;
     Index h = first;
+    // Bound: each turn reaches one more face, and more turns than the ring has faces end both
+    // loops.
     for (;;) {  // forwards: across the edge entering v
         const Index twin = c.twin[prev_halfedge(h)];
         if (twin == kNoIndex) break;
@@ -89,6 +76,7 @@ std::vector<bool> find_degenerate_faces(const Mesh& mesh) {
 
 MeshDiagnostics diagnose(const Mesh& mesh, const Connectivity& c) {
     MeshDiagnostics d;
+    std::vector<Index> inconsistent, nonmanifold;
     for (std::size_t h = 0; h < c.edge_kind.size(); ++h) {
         const Index hi = static_cast<Index>(h);
         if (c.edge_kind[h] == EdgeKind::Manifold) continue;  // almost all: no lookup needed
@@ -98,21 +86,24 @@ MeshDiagnostics diagnose(const Mesh& mesh, const Connectivity& c) {
                 ++d.boundary_edges;
                 break;
             case EdgeKind::Inconsistent:
-                d.inconsistent_edges += is_first_halfedge_of_edge(mesh, c, hi);
+                inconsistent.push_back(hi);
                 break;
             case EdgeKind::NonManifold:
-                d.nonmanifold_edges += is_first_halfedge_of_edge(mesh, c, hi);
+                nonmanifold.push_back(hi);
                 break;
             case EdgeKind::Manifold:
                 break;
         }
     }
+    d.inconsistent_edges = distinct_edges(mesh, inconsistent);
+    d.nonmanifold_edges = distinct_edges(mesh, nonmanifold);
+    const DuplicateFaces duplicates = find_duplicate_faces(mesh, c);
+    d.duplicate_faces = duplicates.removed + duplicates.opposite_pairs;
 
     DisjointSets sets(mesh.vertex_count());
     for (Index f = 0; f < mesh.face_count(); ++f) {
         d.degenerate_faces += is_degenerate_face(mesh, f);
         join_face(mesh, c, f, sets);
-        d.duplicate_faces += is_duplicate_of_earlier(mesh, c, f);
     }
     for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
         const Index vi = static_cast<Index>(v);

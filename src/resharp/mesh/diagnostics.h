@@ -15,9 +15,10 @@ struct MeshDiagnostics {
     std::size_t inconsistent_edges = 0;    ///< edges whose two faces disagree on orientation
     std::size_t nonmanifold_vertices = 0;  ///< vertices whose faces form more than one fan
     std::size_t degenerate_faces = 0;      ///< faces with a repeated vertex or zero area
-    std::size_t duplicate_faces = 0;       ///< faces with the same three vertices as an earlier one
-    std::size_t isolated_vertices = 0;     ///< vertices no face uses
-    std::size_t components = 0;            ///< edge-connected pieces of the surface
+    /// later copies of exact duplicate faces plus pairs of opposite faces (duplicate_faces.h)
+    std::size_t duplicate_faces = 0;
+    std::size_t isolated_vertices = 0;  ///< vertices no face uses
+    std::size_t components = 0;         ///< edge-connected pieces of the surface
 
     /// True when the mesh is a closed, oriented 2-manifold without degenerate faces.
     bool is_clean_closed_manifold() const {

@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -81,6 +82,34 @@ int corner_of(const Triangle& t, Index v) {
     if (t[1] == v) return 1;
     RESHARP_ASSERT(t[2] == v);
     return 2;
+}
+
+namespace {
+double squared_distance_to_segment(const Vec3& x, const Vec3& a, const Vec3& b) {
+    const Vec3 ab = b - a;
+    const double length = ab.squaredNorm();
+    const double t = length > 0.0 ? std::clamp((x - a).dot(ab) / length, 0.0, 1.0) : 0.0;
+    return (a + t * ab - x).squaredNorm();
+}
+}  // namespace
+
+double squared_distance_to_triangle(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c) {
+    const Vec3 ab = b - a, ac = c - a, ax = x - a;
+    const Vec3 n = ab.cross(ac);
+    const double area2 = n.squaredNorm();
+    if (area2 > 0.0) {
+        // Inside the prism over the face: the distance to its plane.
+        const Vec3 bx = x - b, cx = x - c;
+        const bool inside = n.dot(ab.cross(ax)) >= 0.0 && n.dot((c - b).cross(bx)) >= 0.0 &&
+                            n.dot((a - c).cross(cx)) >= 0.0;
+        if (inside) {
+            const double height = n.dot(ax);
+            return height * height / area2;
+        }
+    }
+    // Otherwise (or degenerate): the closest of the three edges.
+    return std::min({squared_distance_to_segment(x, a, b), squared_distance_to_segment(x, b, c),
+                     squared_distance_to_segment(x, c, a)});
 }
 
 }  // namespace resharp

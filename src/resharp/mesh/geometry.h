@@ -39,4 +39,8 @@ double angle_deg(const Vec3& a, const Vec3& b);
 /// Position of v within face f (0, 1 or 2). f must contain v.
 int corner_of(const Triangle& t, Index v);
 
+/// Squared distance from x to the closest point of triangle (a, b, c): to its plane where x
+/// projects inside it, to the closest of its edges otherwise (and for a degenerate triangle).
+double squared_distance_to_triangle(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c);
+
 }  // namespace resharp

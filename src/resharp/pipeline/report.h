@@ -21,9 +21,11 @@ enum class Stage {
     Classification,       ///< edge and corner triangles
     FeatureNormals,       ///< eq. 5.1
     SharpPoints,          ///< eq. 5.2-5.5 and the spike test
-    Split,                ///< re-triangulation
+    Guard,                ///< which points the split may insert (every round)
+    Split,                ///< re-triangulation (every round)
+    HarmCheck,            ///< the do-no-harm check (every round)
 };
-inline constexpr std::size_t kStageCount = 8;
+inline constexpr std::size_t kStageCount = 10;
 
 std::string_view stage_name(Stage stage);
 
@@ -57,10 +59,29 @@ struct RestoreReport {
     std::size_t refused_by_flip_test = 0;    ///< eq. 5.4
     std::size_t refused_by_spike_test = 0;   ///< §5.3
     std::size_t refused_missing_normal = 0;  ///< a vertex with no face on its own feature
-    std::size_t refused_by_quality = 0;      ///< a split piece would flip or collapse
-    std::size_t refused_by_guard = 0;        ///< a split piece would turn against the face it
-                                       ///< replaces, or meet another triangle (docs/method.md)
-    std::size_t split_triangles = 0;
+    std::size_t refused_by_quality = 0;      ///< the guard: a split piece would flip or collapse
+    std::size_t refused_by_guard = 0;        ///< the guard: a piece would turn against the face it
+                                             ///< replaces or stand on edge across thin material
+    std::size_t guard_repairs = 0;           ///< faces the guard repaired, over all rounds
+    std::size_t split_triangles = 0;         ///< input faces replaced by pieces
+
+    /// The do-no-harm check (docs/method.md, "Do no harm"): what it found in the first round,
+    /// in pieces, and what undoing it took.
+    std::size_t harm_turned = 0;    ///< pieces turned against the input surface
+    std::size_t harm_folded = 0;    ///< pieces folded onto a neighbour
+    std::size_t harm_crossing = 0;  ///< pieces meeting a nearby face
+    std::size_t harm_rounds = 0;    ///< rounds of guard, split and check run (1 if none found)
+    std::size_t undone_points = 0;  ///< accepted points withdrawn because their pieces did harm
+
+    /// Mesher artefacts (MeshRepairOptions).
+    std::size_t duplicate_faces_removed = 0;  ///< later copies of exact duplicate faces
+    std::size_t opposite_face_pairs = 0;      ///< zero-thickness sheets, kept
+
+    /// The output is the input (after duplicate removal) unchanged: nothing was restored.
+    bool output_unchanged = false;
+    /// Why, when the output is unchanged though there were points to insert: "cancelled"
+    /// (RestoreOptions::stop), "harm rounds exhausted"; empty otherwise.
+    std::string_view unchanged_reason;
 
     /// Wall time per stage, indexed by Stage.
     std::array<std::chrono::nanoseconds, kStageCount> stage_time{};

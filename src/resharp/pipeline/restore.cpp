@@ -5,17 +5,14 @@
 #include <algorithm>
 #include <string>
 
+#include "resharp/core/assert.h"
 #include "resharp/core/errors.h"
 #include "resharp/core/stage_timer.h"
 #include "resharp/curvature/local_height.h"
-#include "resharp/mesh/connectivity.h"
-#include "resharp/mesh/geometry.h"
-#include "resharp/restoration/band_classification.h"
-#include "resharp/restoration/feature_normals.h"
+#include "resharp/mesh/duplicate_faces.h"
+#include "resharp/restoration/harm_check.h"
+#include "resharp/restoration/point_guard.h"
 #include "resharp/restoration/sharp_points.h"
-#include "resharp/restoration/split.h"
-#include "resharp/segmentation/edge_segmentation.h"
-#include "resharp/segmentation/feature_segmentation.h"
 
 namespace resharp {
 
@@ -35,8 +32,12 @@ std::string_view stage_name(Stage stage) {
             return "feature normals";
         case Stage::SharpPoints:
             return "sharp points";
+        case Stage::Guard:
+            return "guard";
         case Stage::Split:
             return "split";
+        case Stage::HarmCheck:
+            return "harm check";
     }
     return "unknown";
 }
@@ -61,144 +62,294 @@ void validate_mesh(const Mesh& mesh) {
     }
 }
 
-/// Runs the stages in order and times each; the one place that sequences them.
-class Pipeline {
-public:
-    Pipeline(const Mesh& mesh, const RestoreOptions& options, RestoreResult& result)
-        : mesh_(mesh), options_(options), report_(result.report), result_(result) {}
+void validate_options(const RestoreOptions& options) {
+    if (options.threads < 0) throw InvalidInput("thread count must not be negative");
+    if (options.max_harm_rounds < 1) throw InvalidInput("harm rounds must be at least 1");
+}
 
-    Mesh run() {
-        Connectivity connectivity;
-        SurfaceNormals normals_of_input;
-        timed(Stage::MeshBuilding, [&] {
-            connectivity = build_connectivity(mesh_);
-            report_.input = diagnose(mesh_, connectivity);
-            normals_of_input = surface_normals(mesh_, connectivity);
-        });
-        const std::vector<Vec3>& face_normals = normals_of_input.face;
-        const std::vector<Vec3>& vertex_normals = normals_of_input.vertex;
-        PrincipalCurvatures curvatures;
-        timed(Stage::Curvature, [&] {
-            curvatures = estimate_principal_curvatures(mesh_, connectivity, vertex_normals);
-        });
-        EdgeSegmentation edges;
-        timed(Stage::EdgeSegmentation, [&] {
-            edges = segment_edges(mesh_, connectivity, curvatures, face_normals, options_.edges);
-        });
-        record(edges);
-        FeatureSegmentation features;
-        timed(Stage::FeatureSegmentation, [&] {
-            features = segment_features(mesh_, connectivity, face_normals, edges.is_edge,
-                                        options_.features);
-        });
-        record(features);
-        BandClassification bands;
-        timed(Stage::Classification, [&] {
-            bands = classify_bands(mesh_, connectivity, face_normals, edges.is_edge,
-                                   features.face_patch, features.vertex_patch, options_.bands);
-        });
-        if (options_.keep_segmentation) keep(edges, features, bands);
-        report_.crossing_edges = bands.crossing_edges;
-        report_.edge_triangles = bands.edge_triangles;
-        report_.corner_triangles = bands.corner_triangles;
-        FeatureNormals normals;
-        timed(Stage::FeatureNormals, [&] {
-            normals = feature_normals(mesh_, connectivity, face_normals, features.face_patch,
-                                      features.vertex_patch, bands, options_.normals);
-            override_normals(normals);
-        });
-        SharpPoints points;
-        timed(Stage::SharpPoints, [&] {
-            points = place_sharp_points(mesh_, connectivity, face_normals, bands, normals.normal,
-                                        options_.points);
-        });
-        report_.refused_by_flip_test = points.refused_by_flip_test;
-        report_.refused_by_spike_test = points.refused_by_spike_test;
-        report_.refused_missing_normal = points.missing_normal;
-        Mesh output;
-        timed(Stage::Split, [&] {
-            SplitReport split;
-            output = split_band_triangles(
-                mesh_, connectivity, face_normals, normals, vertex_normals, points, split,
-                result_.source_face, {options_.points.spike_angle_deg, options_.check_clearance});
-            record(split, points);
-        });
-        return output;
+/// Times stages into `times` and asks `stop` before each.
+class StageClock {
+public:
+    StageClock(std::array<std::chrono::nanoseconds, kStageCount>& times, const StopWhen& stop)
+        : times_(times), stop_(stop) {}
+
+    template <class Work>
+    void run(Stage stage, Work&& work) {
+        if (stop_.should_stop()) throw Cancelled("restore() was asked to stop");
+        const StageTimer timer;
+        work();
+        times_[static_cast<std::size_t>(stage)] += timer.elapsed();
     }
 
 private:
-    template <class Work>
-    void timed(Stage stage, Work&& work) {
-        const StageTimer timer;
-        work();
-        report_.stage_time[static_cast<std::size_t>(stage)] = timer.elapsed();
-    }
+    std::array<std::chrono::nanoseconds, kStageCount>& times_;
+    const StopWhen& stop_;
+};
 
-    void override_normals(FeatureNormals& normals) const {
-        const auto& given = options_.normal_override;
-        if (given.empty()) return;
-        for (std::size_t v = 0; v < normals.normal.size(); ++v) {
-            if (!normals.normal[v].isZero(0.0)) normals.normal[v] = given[v];
-            normals.fit_correction_deg[v] = 0.0f;  // exact normals need no margin
+/// Per candidate point (#P): set for the points the slots of `faces` hold.
+void withdraw_points_of(const std::vector<Index>& faces, const PointSlots& slots,
+                        std::vector<std::uint8_t>& withdrawn, std::size_t& count) {
+    for (Index f : faces) {
+        slots.for_each_point(f, [&](Index p) {
+            count += withdrawn[p] == 0;
+            withdrawn[p] = 1;
+        });
+    }
+}
+
+/// The input as its own split: no face replaced.
+SplitMesh unchanged(const Mesh& mesh) {
+    SplitMesh out;
+    out.mesh = mesh;
+    out.source_face.resize(mesh.face_count());
+    for (Index f = 0; f < mesh.face_count(); ++f) out.source_face[f] = f;
+    return out;
+}
+
+/// Invariants of a split the harm check accepted: the input vertices first and unchanged, every
+/// source face valid and in order, pieces only on faces with a crossing edge or a corner role.
+bool is_sound_split(const InputSurface& input, const BandClassification& bands,
+                    const SplitMesh& split) {
+    const Mesh& in = input.mesh;
+    if (split.mesh.vertex_count() < in.vertex_count()) return false;
+    if (!std::equal(in.positions.begin(), in.positions.end(), split.mesh.positions.begin()))
+        return false;
+    if (split.source_face.size() != split.mesh.face_count()) return false;
+    for (std::size_t o = 0; o < split.source_face.size(); ++o) {
+        const Index f = split.source_face[o];
+        if (f >= in.face_count() || (o > 0 && f < split.source_face[o - 1])) return false;
+        const bool may_be_split = bands.face_role[f] != BandRole::None ||
+                                  bands.is_crossing[3 * f] || bands.is_crossing[3 * f + 1] ||
+                                  bands.is_crossing[3 * f + 2];
+        if (split.mesh.triangles[o] != in.triangles[f] && !may_be_split) return false;
+    }
+    return true;
+}
+
+/// Invariant of the split: it adds no boundary, non-manifold or inconsistent edge (every edge
+/// point splits both faces of its edge; no point lies on a defective edge).
+bool adds_no_open_or_nonmanifold_edge(const InputSurface& input, const SplitMesh& split) {
+    const MeshDiagnostics before = diagnose(input.mesh, input.connectivity);
+    const MeshDiagnostics after = diagnose(split.mesh, build_connectivity(split.mesh));
+    return after.boundary_edges <= before.boundary_edges &&
+           after.nonmanifold_edges <= before.nonmanifold_edges &&
+           after.inconsistent_edges <= before.inconsistent_edges;
+}
+
+}  // namespace
+
+Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const RestoreOptions& options) {
+    Detection d;
+    d.connectivity = std::move(connectivity);
+    StageClock clock(d.stage_time, options.stop);
+    clock.run(Stage::MeshBuilding, [&] { d.normals = surface_normals(mesh, d.connectivity); });
+    PrincipalCurvatures curvatures;
+    clock.run(Stage::Curvature, [&] {
+        curvatures = estimate_principal_curvatures(mesh, d.connectivity, d.normals.vertex);
+    });
+    clock.run(Stage::EdgeSegmentation, [&] {
+        d.edges = segment_edges(mesh, d.connectivity, curvatures, d.normals.face, options.edges);
+    });
+    clock.run(Stage::FeatureSegmentation, [&] {
+        d.features = segment_features(mesh, d.connectivity, d.normals.face, d.edges.is_edge,
+                                      options.features);
+    });
+    clock.run(Stage::Classification, [&] {
+        d.bands = classify_bands(mesh, d.connectivity, d.normals.face, d.edges.is_edge,
+                                 d.features.face_patch, d.features.vertex_patch, options.bands);
+    });
+    clock.run(Stage::FeatureNormals, [&] {
+        d.feature_normals =
+            feature_normals(mesh, d.connectivity, d.normals.face, d.features.face_patch,
+                            d.features.vertex_patch, d.bands, options.normals);
+    });
+    return d;
+}
+
+BandRestoration restore_bands(const InputSurface& input, const BandClassification& bands,
+                              const FeatureNormals& feature_normals,
+                              const RestoreOptions& options) {
+    validate_options(options);
+    BandRestoration r;
+    StageClock clock(r.stage_time, options.stop);
+    clock.run(Stage::SharpPoints, [&] {
+        r.points = place_sharp_points(input.mesh, input.connectivity, input.normals.face, bands,
+                                      feature_normals.normal, options.points);
+    });
+    std::vector<std::uint8_t> withdrawn(r.points.points.size(), 0);
+    // Bound: max_harm_rounds; and every round that does not end the loop withdraws at least one
+    // point (harmful faces are split faces, which hold points).
+    for (int round = 0; round < options.max_harm_rounds; ++round) {
+        GuardedPoints guarded;
+        clock.run(Stage::Guard, [&] {
+            guarded = guard_points(input, feature_normals, r.points, withdrawn, options.guard);
+        });
+        r.guard.refused_by_quality += guarded.report.refused_by_quality;
+        r.guard.refused_by_guard += guarded.report.refused_by_guard;
+        r.guard.repairs += guarded.report.repairs;
+        clock.run(Stage::Split, [&] {
+            r.output = {};  // the last round's split goes first: one alive at a time
+            r.output = split_faces(input.mesh, r.points.points, guarded.accepted);
+        });
+        HarmReport harm;
+        clock.run(Stage::HarmCheck, [&] { harm = check_harm(input, r.output, options.harm); });
+        ++r.rounds;
+        if (round == 0) r.first_harm = harm;
+        if (harm.is_harmless()) {
+            RESHARP_EXPENSIVE_ASSERT(is_sound_split(input, bands, r.output));
+            RESHARP_EXPENSIVE_ASSERT(adds_no_open_or_nonmanifold_edge(input, r.output));
+            return r;
+        }
+        const std::size_t before = r.undone_points;
+        withdraw_points_of(harm.harmful_faces, guarded.accepted, withdrawn, r.undone_points);
+        RESHARP_ASSERT(r.undone_points > before);
+    }
+    r.rounds_exhausted = true;
+    r.output = unchanged(input.mesh);
+    return r;
+}
+
+namespace {
+
+/// restore() on one mesh: the one place that sequences the stages and fills the report.
+class Pipeline {
+public:
+    Pipeline(const Mesh& input, const RestoreOptions& options, RestoreResult& result)
+        : input_(input), options_(options), result_(result), report_(result.report) {}
+
+    void run() {
+        Connectivity connectivity;
+        DuplicateFaces duplicates;
+        const StageTimer building;
+        connectivity = build_connectivity(input_);
+        report_.input = diagnose(input_, connectivity);
+        if (options_.repair.remove_duplicate_faces && report_.input.duplicate_faces > 0) {
+            duplicates = find_duplicate_faces(input_, connectivity);
+        }
+        report_.duplicate_faces_removed = duplicates.removed;
+        report_.opposite_face_pairs = duplicates.opposite_pairs;
+        const Mesh working = duplicates.removed > 0 ? keep_faces(input_, duplicates.kept) : Mesh{};
+        const Mesh& mesh = duplicates.removed > 0 ? working : input_;
+        if (duplicates.removed > 0) {
+            connectivity = {};  // the input's goes first: one connectivity alive at a time
+            connectivity = build_connectivity(mesh);
+        }
+        const auto building_time = building.elapsed();
+
+        Detection detection = detect_bands(mesh, std::move(connectivity), options_);
+        add_times(detection.stage_time);
+        report_.stage_time[static_cast<std::size_t>(Stage::MeshBuilding)] += building_time;
+        record(detection);
+        if (options_.keep_segmentation) keep(detection, duplicates);
+        // What the rest does not read goes before the rest allocates (peak memory).
+        detection.edges = {};
+        detection.features = {};
+
+        BandRestoration restored = restore_bands(detection.surface(mesh), detection.bands,
+                                                 detection.feature_normals, options_);
+        add_times(restored.stage_time);
+        record(restored);
+        result_.mesh = std::move(restored.output.mesh);
+        result_.source_face = std::move(restored.output.source_face);
+        if (duplicates.removed > 0) {
+            for (Index& f : result_.source_face) f = duplicates.kept[f];
         }
     }
 
-    void keep(const EdgeSegmentation& edges, const FeatureSegmentation& features,
-              const BandClassification& bands) {
-        result_.segmentation = {edges.is_edge, features.vertex_patch, features.face_patch,
-                                bands.face_role};
+private:
+    void add_times(const std::array<std::chrono::nanoseconds, kStageCount>& times) {
+        for (std::size_t s = 0; s < kStageCount; ++s) report_.stage_time[s] += times[s];
     }
 
-    void record(const EdgeSegmentation& s) {
-        report_.edge_vertices = s.edge_vertex_count();
-        report_.clustered_edge_vertices = s.clustered_edge_vertices;
-        report_.isolated_edge_vertices_removed = s.isolated_removed;
-        report_.bridge_vertices_added = s.bridge_vertices_added;
-        report_.flat_edge_vertices_removed = s.flat_removed;
-        report_.kmeans_iterations = s.kmeans_iterations;
+    void keep(const Detection& d, const DuplicateFaces& duplicates) {
+        Segmentation& s = result_.segmentation;
+        s.is_edge_vertex = d.edges.is_edge;
+        s.vertex_patch = d.features.vertex_patch;
+        if (duplicates.removed == 0) {
+            s.face_patch = d.features.face_patch;
+            s.face_role = d.bands.face_role;
+            return;
+        }
+        s.face_patch.assign(input_.face_count(), kNoIndex);
+        s.face_role.assign(input_.face_count(), BandRole::None);
+        for (std::size_t i = 0; i < duplicates.kept.size(); ++i) {
+            s.face_patch[duplicates.kept[i]] = d.features.face_patch[i];
+            s.face_role[duplicates.kept[i]] = d.bands.face_role[i];
+        }
     }
 
-    void record(const FeatureSegmentation& s) {
-        report_.feature_patches = s.patch_count;
-        report_.grown_patches = s.grown_patches;
-        report_.band_patches = s.band_patches;
-        report_.tiny_patches_absorbed = s.tiny_absorbed;
-        report_.patch_merges = s.merges;
+    void record(const Detection& d) {
+        const EdgeSegmentation& e = d.edges;
+        report_.edge_vertices = e.edge_vertex_count();
+        report_.clustered_edge_vertices = e.clustered_edge_vertices;
+        report_.isolated_edge_vertices_removed = e.isolated_removed;
+        report_.bridge_vertices_added = e.bridge_vertices_added;
+        report_.flat_edge_vertices_removed = e.flat_removed;
+        report_.kmeans_iterations = e.kmeans_iterations;
+        const FeatureSegmentation& f = d.features;
+        report_.feature_patches = f.patch_count;
+        report_.grown_patches = f.grown_patches;
+        report_.band_patches = f.band_patches;
+        report_.tiny_patches_absorbed = f.tiny_absorbed;
+        report_.patch_merges = f.merges;
+        report_.crossing_edges = d.bands.crossing_edges;
+        report_.edge_triangles = d.bands.edge_triangles;
+        report_.corner_triangles = d.bands.corner_triangles;
     }
 
-    void record(const SplitReport& split, const SharpPoints& points) {
-        report_.refused_by_quality = split.refused_by_quality;
-        report_.refused_by_guard = split.refused_by_guard;
-        report_.split_triangles = split.split_faces;
+    void record(const BandRestoration& r) {
+        report_.refused_by_flip_test = r.points.refused_by_flip_test;
+        report_.refused_by_spike_test = r.points.refused_by_spike_test;
+        report_.refused_missing_normal = r.points.missing_normal;
+        report_.refused_by_quality = r.guard.refused_by_quality;
+        report_.refused_by_guard = r.guard.refused_by_guard;
+        report_.guard_repairs = r.guard.repairs;
+        report_.harm_turned = r.first_harm.turned;
+        report_.harm_folded = r.first_harm.folded;
+        report_.harm_crossing = r.first_harm.crossing;
+        report_.harm_rounds = r.rounds;
+        report_.undone_points = r.undone_points;
+        report_.split_triangles = r.output.split_faces;
+        const std::size_t new_vertices = r.output.point_of_new_vertex.size();
         report_.corner_points_inserted = static_cast<std::size_t>(
-            std::count_if(points.corner_point.begin(), points.corner_point.end(),
-                          [](Index id) { return id != kNoIndex; }));
-        report_.edge_points_inserted = split.new_vertices - report_.corner_points_inserted;
+            std::count_if(r.output.point_of_new_vertex.begin(), r.output.point_of_new_vertex.end(),
+                          [&](Index p) { return p >= r.points.edge_points; }));
+        report_.edge_points_inserted = new_vertices - report_.corner_points_inserted;
+        report_.output_unchanged = new_vertices == 0;
+        if (r.rounds_exhausted) report_.unchanged_reason = "harm rounds exhausted";
     }
 
-    const Mesh& mesh_;
+    const Mesh& input_;
     const RestoreOptions& options_;
-    RestoreReport& report_;
     RestoreResult& result_;
+    RestoreReport& report_;
 };
+
+/// The input as restore() returns it when it gives up.
+void give_back_input(const Mesh& input, RestoreResult& result, std::string_view reason) {
+    SplitMesh same = unchanged(input);
+    result.mesh = std::move(same.mesh);
+    result.source_face = std::move(same.source_face);
+    result.report.output_unchanged = true;
+    result.report.unchanged_reason = reason;
+}
 
 }  // namespace
 
 RestoreResult restore(const Mesh& input, const RestoreOptions& options) {
     validate_mesh(input);
-    if (options.threads < 0) throw InvalidInput("thread count must not be negative");
-    if (!options.normal_override.empty() &&
-        options.normal_override.size() != input.vertex_count()) {
-        throw InvalidInput("normal override has " + std::to_string(options.normal_override.size()) +
-                           " normals for " + std::to_string(input.vertex_count()) + " vertices");
-    }
+    validate_options(options);
     RestoreResult result;
     RestoreReport& report = result.report;
     report.input_vertices = input.vertex_count();
     report.input_triangles = input.face_count();
     const StageTimer total;
     tbb::task_arena arena(options.threads == 0 ? tbb::task_arena::automatic : options.threads);
-    arena.execute([&] { result.mesh = Pipeline(input, options, result).run(); });
+    try {
+        arena.execute([&] { Pipeline(input, options, result).run(); });
+    } catch (const Cancelled&) {
+        give_back_input(input, result, "cancelled");
+    }
     report.total_time = total.elapsed();
     report.output_vertices = result.mesh.vertex_count();
     report.output_triangles = result.mesh.face_count();

@@ -1,13 +1,24 @@
 #pragma once
-/// The one entry point: the whole method of the paper on an indexed triangle mesh.
+/// The one entry point, restore(): the whole method of the paper on an indexed triangle mesh,
+/// guarded so that it never makes a mesh worse. Its two halves are public too, for callers
+/// that put their own data between them (evaluation with exact normals, benchmarks).
 
+#include <array>
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
+#include "resharp/mesh/connectivity.h"
+#include "resharp/mesh/geometry.h"
 #include "resharp/mesh/mesh.h"
 #include "resharp/pipeline/options.h"
 #include "resharp/pipeline/report.h"
 #include "resharp/restoration/band_classification.h"
+#include "resharp/restoration/feature_normals.h"
+#include "resharp/restoration/input_surface.h"
+#include "resharp/restoration/split.h"
+#include "resharp/segmentation/edge_segmentation.h"
+#include "resharp/segmentation/feature_segmentation.h"
 
 namespace resharp {
 
@@ -21,24 +32,67 @@ struct Segmentation {
 
 struct RestoreResult {
     /// The restored mesh: the input vertices first, unchanged and in order, then the new points
-    /// on sharp edges and corners; faces in input order, each unchanged or replaced in place by
-    /// its pieces.
+    /// on sharp edges and corners; faces in input order (less removed duplicates), each
+    /// unchanged or replaced in place by its pieces.
     Mesh mesh;
     /// Per output face (#F out): the input face it is or was cut from, so that callers can
     /// carry face attributes (tool ids, colours) over.
     std::vector<Index> source_face;
     RestoreReport report;
-    /// Filled only when RestoreOptions::keep_segmentation is set.
+    /// Filled only when RestoreOptions::keep_segmentation is set; removed duplicate faces
+    /// have no patch and no role.
     Segmentation segmentation;
 };
 
 /// Paper §3-§5: finds the chamfer bands a grid-based simulation leaves along sharp edges and
 /// corners and restores the sharp edges by inserting points on them. Input vertices never move.
-/// Defects (boundaries, non-manifold edges, degenerate faces) are counted in the report and
-/// left unchanged; restoration goes on elsewhere. The same input and options give the same
-/// output whatever the thread count.
+/// Exact duplicate faces are removed first (MeshRepairOptions). Every output face that replaces
+/// an input face is checked against the input surface; what fails is undone (docs/method.md,
+/// "Do no harm"). Defects (boundaries, non-manifold edges, degenerate faces) are counted in the
+/// report and left unchanged; restoration goes on elsewhere. The same input and options give
+/// the same output whatever the thread count. When RestoreOptions::stop fires, the input comes
+/// back unchanged with report.output_unchanged set.
 /// \throws InvalidInput if the mesh has no triangles, an index out of range or a non-finite
 ///         coordinate, or an option is out of range.
 RestoreResult restore(const Mesh& input, const RestoreOptions& options = {});
+
+/// The first half of restore(), from mesh building to the feature normals (§3-§5.1).
+struct Detection {
+    Connectivity connectivity;
+    SurfaceNormals normals;
+    EdgeSegmentation edges;
+    FeatureSegmentation features;
+    BandClassification bands;
+    FeatureNormals feature_normals;
+    std::array<std::chrono::nanoseconds, kStageCount> stage_time{};  ///< of the stages run
+
+    InputSurface surface(const Mesh& mesh) const { return {mesh, connectivity, normals}; }
+};
+
+/// Takes the mesh and its connectivity; runs the stages up to the feature normals.
+/// \throws Cancelled when options.stop fires between two stages; InvalidInput for options
+///         out of range.
+Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const RestoreOptions& options);
+
+/// The second half of restore(): points placed on the bands (eq. 5.2-5.5), then rounds of
+/// guard, split and harm check; each round withdraws the points of the faces whose pieces did
+/// harm, until a round finds none (at most options.max_harm_rounds rounds; each round but the
+/// first has at least one point fewer, so also at most one round more than points).
+struct BandRestoration {
+    SplitMesh output;       ///< the last round's split; the input itself when given up
+    SharpPoints points;     ///< the placed candidates
+    GuardReport guard;      ///< summed over the rounds
+    HarmReport first_harm;  ///< what the first round's check found
+    std::size_t rounds = 0;
+    std::size_t undone_points = 0;
+    bool rounds_exhausted = false;  ///< harm remained after the last round: nothing inserted
+    std::array<std::chrono::nanoseconds, kStageCount> stage_time{};  ///< of the stages run
+};
+
+/// Takes the input surface, its bands and the feature normals (#V) to place points with.
+/// \throws Cancelled when options.stop fires between two rounds; InvalidInput for options out
+///         of range.
+BandRestoration restore_bands(const InputSurface& input, const BandClassification& bands,
+                              const FeatureNormals& feature_normals, const RestoreOptions& options);
 
 }  // namespace resharp

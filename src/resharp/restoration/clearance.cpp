@@ -1,8 +1,5 @@
 #include "resharp/restoration/clearance.h"
 
-#include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -218,116 +215,6 @@ bool triangles_meet(const IdTriangle& s, const IdTriangle& t, double tolerance) 
         }
     }
     return false;
-}
-
-namespace {
-
-Box3 box_of(const Mesh& mesh, Index f) {
-    Box3 box;
-    for (Index v : mesh.triangles[f]) box.extend(mesh.positions[v]);
-    return box;
-}
-
-}  // namespace
-
-namespace {
-
-/// Scratch of one thread's searches: per face and per vertex, the last search that met it.
-struct SearchMarks {
-    std::vector<Index> face, vertex;
-    std::vector<Index> frontier;
-    SearchMarks(std::size_t faces, std::size_t vertices)
-        : face(faces, kNoIndex), vertex(vertices, kNoIndex) {}
-};
-
-/// Whether untouched face g lies beyond the cap plane of touched face f, but for f's vertices.
-bool lies_beyond_cap(const Mesh& mesh, Index f, const TouchedFace& touched, Index g) {
-    if (touched.cap_normal.isZero(0.0)) return false;
-    const Triangle& own = mesh.triangles[f];
-    for (Index v : mesh.triangles[g]) {
-        if (v == own[0] || v == own[1] || v == own[2]) continue;
-        if (touched.cap_normal.dot(mesh.positions[v]) >= touched.cap_offset - touched.tolerance) {
-            return false;
-        }
-    }
-    return true;
-}
-
-/// Appends to `out` (touched number i, face) for each face near touched face f (number i; see
-/// NearbyFaces), found by a search from f across the vertices of faces that meet its box.
-void search_near(const Mesh& mesh, const Connectivity& connectivity, Index f, Index i,
-                 std::span<const Index> number, std::span<const TouchedFace> faces,
-                 SearchMarks& marks, std::vector<std::pair<Index, Index>>& out) {
-    const Box3& own_box = faces[i].box;
-    // The search goes on from vertices within the box widened by its own size: a face meeting
-    // the box with no vertex in that reach would be longer than twice the box.
-    const Box3 reach(own_box.min() - own_box.sizes(), own_box.max() + own_box.sizes());
-    marks.face[f] = i;
-    marks.frontier.clear();
-    for (Index v : mesh.triangles[f]) {
-        marks.vertex[v] = i;
-        marks.frontier.push_back(v);
-    }
-    for (std::size_t next = 0; next < marks.frontier.size(); ++next) {
-        for (Index g : connectivity.faces_around(marks.frontier[next])) {
-            if (marks.face[g] == i) continue;
-            marks.face[g] = i;
-            const bool is_touched = number[g] != kNoIndex;
-            if (!(is_touched ? faces[number[g]].box : box_of(mesh, g)).intersects(own_box))
-                continue;
-            if (is_touched || !lies_beyond_cap(mesh, f, faces[i], g)) out.emplace_back(i, g);
-            for (Index v : mesh.triangles[g]) {
-                if (marks.vertex[v] == i || !reach.contains(mesh.positions[v])) continue;
-                marks.vertex[v] = i;
-                marks.frontier.push_back(v);
-            }
-        }
-    }
-}
-
-}  // namespace
-
-NearbyFaces::NearbyFaces(const Mesh& mesh, const Connectivity& connectivity,
-                         std::span<const Index> touched, std::span<const Index> number,
-                         std::span<const TouchedFace> faces) {
-    // Each touched face searches its own surroundings, in parallel, in chunks whose results are
-    // joined in order (the same lists on any thread count).
-    constexpr std::size_t kChunk = 256;
-    std::vector<std::vector<std::pair<Index, Index>>> found((touched.size() + kChunk - 1) / kChunk);
-    tbb::enumerable_thread_specific<SearchMarks> marks(mesh.face_count(), mesh.vertex_count());
-    tbb::parallel_for(std::size_t{0}, found.size(), [&](std::size_t chunk) {
-        SearchMarks& mine = marks.local();
-        const std::size_t end = std::min(touched.size(), (chunk + 1) * kChunk);
-        for (std::size_t i = chunk * kChunk; i < end; ++i) {
-            search_near(mesh, connectivity, touched[i], static_cast<Index>(i), number, faces, mine,
-                        found[chunk]);
-        }
-    });
-    // Touched faces near each other are listed both ways, so that a face whose pieces change
-    // can tell every face that checked against them.
-    start_.assign(touched.size() + 1, 0);
-    for (const auto& pairs : found) {
-        for (const auto& [i, g] : pairs) {
-            ++start_[i + 1];
-            if (number[g] != kNoIndex) ++start_[number[g] + 1];
-        }
-    }
-    for (std::size_t i = 1; i < start_.size(); ++i) start_[i] += start_[i - 1];
-    faces_.resize(start_.back());
-    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
-    for (const auto& pairs : found) {
-        for (const auto& [i, g] : pairs) {
-            faces_[fill[i]++] = g;
-            if (number[g] != kNoIndex) faces_[fill[number[g]]++] = touched[i];
-        }
-    }
-    size_.resize(touched.size());
-    tbb::parallel_for(std::size_t{0}, touched.size(), [&](std::size_t i) {
-        const auto first = faces_.begin() + static_cast<std::ptrdiff_t>(start_[i]);
-        const auto last = faces_.begin() + static_cast<std::ptrdiff_t>(start_[i + 1]);
-        std::sort(first, last);
-        size_[i] = static_cast<Index>(std::unique(first, last) - first);  // pairs found twice
-    });
 }
 
 }  // namespace resharp

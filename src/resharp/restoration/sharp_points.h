@@ -19,15 +19,36 @@ struct SharpPointOptions {
     double spike_angle_deg = 150.0;
 };
 
+/// Which point, if any, each place of the mesh that can hold one holds: the crossing edges
+/// and the corner triangles. Point numbers index a point list kept beside it (SharpPoints).
+struct PointSlots {
+    /// Per half-edge (#3F): the edge's point, on both half-edges of a crossing edge that has
+    /// one; kNoIndex elsewhere.
+    std::vector<Index> edge_point;
+    /// Per face (#F): the corner triangle's point, or kNoIndex.
+    std::vector<Index> corner_point;
+
+    /// True when face f has a point on one of its edges or inside it.
+    bool has_points(Index f) const {
+        return corner_point[f] != kNoIndex || edge_point[3 * f] != kNoIndex ||
+               edge_point[3 * f + 1] != kNoIndex || edge_point[3 * f + 2] != kNoIndex;
+    }
+    /// Calls visit(point) for each slot of face f that holds one: its three edges, then its
+    /// corner (an edge snapped onto the corner point is visited twice).
+    template <class Visit>
+    void for_each_point(Index f, Visit&& visit) const {
+        for (Index k = 0; k < 3; ++k) {
+            if (edge_point[3 * f + k] != kNoIndex) visit(edge_point[3 * f + k]);
+        }
+        if (corner_point[f] != kNoIndex) visit(corner_point[f]);
+    }
+};
+
 struct SharpPoints {
     /// The new points: edge points in order of their edge's lower half-edge, then corner points
     /// in face order.
     std::vector<Vec3> points;
-    /// Per half-edge (#3F): index into points of the edge's point, on both half-edges of a
-    /// crossing edge that got one; kNoIndex elsewhere.
-    std::vector<Index> edge_point;
-    /// Per face (#F): index into points of the corner triangle's point, or kNoIndex.
-    std::vector<Index> corner_point;
+    PointSlots slots;  ///< where each point goes
     std::size_t edge_points = 0;
     std::size_t corner_points = 0;
     std::size_t refused_by_flip_test =

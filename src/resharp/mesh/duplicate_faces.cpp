@@ -1,0 +1,83 @@
+#include "resharp/mesh/duplicate_faces.h"
+
+#include <algorithm>
+#include <array>
+
+namespace resharp {
+namespace {
+
+/// A face's vertices rotated so that the smallest comes first: two faces are exact duplicates
+/// when their keys are equal, and opposite when one's key equals the other's reversed key.
+using FaceKey = std::array<Index, 3>;
+
+FaceKey key_of(const Triangle& t) {
+    const int first = t[0] < t[1] ? (t[0] < t[2] ? 0 : 2) : (t[1] < t[2] ? 1 : 2);
+    return {t[first], t[(first + 1) % 3], t[(first + 2) % 3]};
+}
+
+FaceKey reversed(const FaceKey& k) { return {k[0], k[2], k[1]}; }
+
+bool has_repeated_vertex(const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[0] == t[2]; }
+
+bool has_defective_edge(const Connectivity& c, Index f) {
+    for (Index k = 0; k < 3; ++k) {
+        const EdgeKind kind = c.edge_kind[3 * f + k];
+        if (kind == EdgeKind::NonManifold || kind == EdgeKind::Inconsistent) return true;
+    }
+    return false;
+}
+
+/// Whether face f's three half-edges all have their twin in one later face: on manifold
+/// edges, the only way two faces can be opposite (counted once, from the earlier face).
+bool starts_manifold_opposite_pair(const Connectivity& c, Index f) {
+    const Index t0 = c.twin[3 * f], t1 = c.twin[3 * f + 1], t2 = c.twin[3 * f + 2];
+    if (t0 == kNoIndex || t1 == kNoIndex || t2 == kNoIndex) return false;
+    const Index g = face_of(t0);
+    return g > f && face_of(t1) == g && face_of(t2) == g;
+}
+
+}  // namespace
+
+DuplicateFaces find_duplicate_faces(const Mesh& mesh, const Connectivity& connectivity) {
+    DuplicateFaces out;
+    std::vector<std::pair<FaceKey, Index>> candidates;
+    for (Index f = 0; f < mesh.face_count(); ++f) {  // one pass: a clean mesh costs only this
+        out.opposite_pairs += starts_manifold_opposite_pair(connectivity, f);
+        const Triangle& t = mesh.triangles[f];
+        if (has_defective_edge(connectivity, f) && !has_repeated_vertex(t))
+            candidates.emplace_back(key_of(t), f);
+    }
+    if (candidates.empty()) return out;
+    std::sort(candidates.begin(), candidates.end());
+    std::vector<std::uint8_t> is_removed(mesh.face_count(), 0);
+    for (std::size_t i = 1; i < candidates.size(); ++i) {
+        if (candidates[i].first == candidates[i - 1].first) {
+            is_removed[candidates[i].second] = 1;  // sorted by face within equal keys
+            ++out.removed;
+        }
+    }
+    // Opposite pairs among the candidates, once per distinct key met both ways.
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+        const FaceKey& key = candidates[i].first;
+        if ((i > 0 && candidates[i - 1].first == key) || reversed(key) < key) continue;
+        out.opposite_pairs += std::binary_search(
+            candidates.begin(), candidates.end(), std::pair{reversed(key), Index{0}},
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+    }
+    if (out.removed == 0) return out;
+    out.kept.reserve(mesh.face_count() - out.removed);
+    for (Index f = 0; f < mesh.face_count(); ++f) {
+        if (!is_removed[f]) out.kept.push_back(f);
+    }
+    return out;
+}
+
+Mesh keep_faces(const Mesh& mesh, const std::vector<Index>& kept) {
+    Mesh out;
+    out.positions = mesh.positions;
+    out.triangles.reserve(kept.size());
+    for (Index f : kept) out.triangles.push_back(mesh.triangles[f]);
+    return out;
+}
+
+}  // namespace resharp

@@ -1,0 +1,114 @@
+#pragma once
+/// How a face with points is cut into pieces (paper §5.2, after Attene et al.'s EdgeSharpener),
+/// shared by the guard, which judges pieces before any mesh is built, and the split, which
+/// emits them. One rule in one place, so that what the guard accepted is what the split makes.
+
+#include <array>
+#include <cmath>
+#include <span>
+
+#include "resharp/mesh/mesh.h"
+#include "resharp/restoration/sharp_points.h"
+
+namespace resharp {
+
+/// Vertex ids while a mesh is split: below `original_count` an input vertex, from it on new
+/// point `id - original_count`.
+class PieceVertices {
+public:
+    PieceVertices(const Mesh& mesh, std::span<const Vec3> points)
+        : mesh_(mesh), points_(points), original_count_(static_cast<Index>(mesh.vertex_count())) {}
+
+    bool is_original(Index id) const { return id < original_count_; }
+    Index of_point(Index point) const { return original_count_ + point; }
+    Index point_of(Index id) const { return id - original_count_; }
+    const Vec3& position(Index id) const {
+        return is_original(id) ? mesh_.positions[id] : points_[id - original_count_];
+    }
+
+private:
+    const Mesh& mesh_;
+    std::span<const Vec3> points_;
+    Index original_count_;
+};
+
+namespace detail {
+
+/// A face's boundary after insertion: its corners with the edge points between them.
+struct FacePolygon {
+    std::array<Index, 6> ids{};
+    int size = 0;
+    void push(Index id) { ids[static_cast<std::size_t>(size++)] = id; }
+    Index at(int i) const { return ids[static_cast<std::size_t>((i + size) % size)]; }
+};
+
+/// Shape quality of a triangle, 1 for equilateral and 0 for degenerate: 4 sqrt(3) area over
+/// the sum of squared edge lengths. Ranks triangles like their smallest angle, without
+/// trigonometry.
+inline double shape_quality(const PieceVertices& ids, Index a, Index b, Index c) {
+    const Vec3 &pa = ids.position(a), &pb = ids.position(b), &pc = ids.position(c);
+    const double edges =
+        (pb - pa).squaredNorm() + (pc - pb).squaredNorm() + (pa - pc).squaredNorm();
+    if (edges == 0.0) return 0.0;
+    return 2.0 * std::sqrt(3.0) * (pb - pa).cross(pc - pa).norm() / edges;
+}
+
+}  // namespace detail
+
+/// Calls emit(a, b, c) for each piece of face f (ids as PieceVertices numbers them),
+/// counter-clockwise like the face; at most six pieces. With a corner point: a fan around it
+/// (Fig. 7b). Otherwise: an ear at each corner whose two edges were split (it lies on one
+/// feature, cut off by the new sharp edge), then the rest as one triangle or a quad split along
+/// the diagonal that gives the better-shaped worse triangle, never along an original edge. A
+/// face without points is its own one piece.
+template <class Emit>
+void for_each_piece(const Mesh& mesh, const PointSlots& slots, const PieceVertices& ids, Index f,
+                    Emit&& emit) {
+    detail::FacePolygon polygon;
+    for (Index k = 0; k < 3; ++k) {
+        polygon.push(mesh.triangles[f][k]);
+        if (slots.edge_point[3 * f + k] != kNoIndex) {
+            polygon.push(ids.of_point(slots.edge_point[3 * f + k]));
+        }
+    }
+    if (slots.corner_point[f] != kNoIndex) {
+        // An edge snapped onto the corner point (the guard's repair) leaves its two pieces empty.
+        const Index centre = ids.of_point(slots.corner_point[f]);
+        for (int i = 0; i < polygon.size; ++i) {
+            if (polygon.at(i) != centre && polygon.at(i + 1) != centre) {
+                emit(polygon.at(i), polygon.at(i + 1), centre);
+            }
+        }
+        return;
+    }
+    detail::FacePolygon rest;
+    for (int i = 0; i < polygon.size; ++i) {
+        const Index id = polygon.at(i);
+        if (ids.is_original(id) && !ids.is_original(polygon.at(i - 1)) &&
+            !ids.is_original(polygon.at(i + 1))) {
+            emit(polygon.at(i - 1), id, polygon.at(i + 1));
+        } else {
+            rest.push(id);
+        }
+    }
+    if (rest.size == 3) {
+        emit(rest.at(0), rest.at(1), rest.at(2));
+        return;
+    }
+    using detail::shape_quality;
+    const bool may_use_02 = !(ids.is_original(rest.at(0)) && ids.is_original(rest.at(2)));
+    const bool may_use_13 = !(ids.is_original(rest.at(1)) && ids.is_original(rest.at(3)));
+    const double quality_02 = std::min(shape_quality(ids, rest.at(0), rest.at(1), rest.at(2)),
+                                       shape_quality(ids, rest.at(0), rest.at(2), rest.at(3)));
+    const double quality_13 = std::min(shape_quality(ids, rest.at(1), rest.at(2), rest.at(3)),
+                                       shape_quality(ids, rest.at(1), rest.at(3), rest.at(0)));
+    if (may_use_02 && (!may_use_13 || quality_02 >= quality_13)) {
+        emit(rest.at(0), rest.at(1), rest.at(2));
+        emit(rest.at(0), rest.at(2), rest.at(3));
+    } else {
+        emit(rest.at(1), rest.at(2), rest.at(3));
+        emit(rest.at(1), rest.at(3), rest.at(0));
+    }
+}
+
+}  // namespace resharp

@@ -1,0 +1,319 @@
+#include "resharp/restoration/point_guard.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "resharp/core/assert.h"
+#include "resharp/core/errors.h"
+#include "resharp/restoration/pieces.h"
+
+namespace resharp {
+namespace {
+
+/// Relative area below which a piece counts as collapsed: far below any real triangle of a
+/// grid mesh, far above rounding noise.
+constexpr double kCollapsedAreaRatio = 1e-12;
+
+double sin_deg(double degrees) { return std::sin(degrees * std::numbers::pi / 180.0); }
+
+/// The normal a piece at an input vertex must agree with, and how far (degrees) that normal
+/// may be off the true surface: the piece must face within 90 degrees less that margin of it.
+struct Reference {
+    const Vec3& normal;
+    double margin_deg;
+};
+
+/// The vertex's feature normal, trusted to within its fit correction: on a curved feature the
+/// estimate is that much off, and a piece standing almost on edge to it may lean past the true
+/// surface (on planes the correction is zero). Where a vertex has no feature normal (all its
+/// faces lie in bands), its plain vertex normal, which leans towards the band by up to half
+/// the edge's angle: a piece must face within 60 degrees of it.
+struct ReferenceNormals {
+    const FeatureNormals& feature;
+    const std::vector<Vec3>& vertex;
+    Reference at(Index v) const {
+        if (feature.normal[v].isZero(0.0)) return {vertex[v], 30.0};
+        return {feature.normal[v], std::min<double>(feature.fit_correction_deg[v], 30.0)};
+    }
+};
+
+/// Why a piece may not be emitted, in the order the checks run.
+enum class Fault {
+    None,
+    Quality,  ///< collapsed, or turned against its vertices' reference normals
+    Guard,    ///< turned against the face it replaces, or too close to flipping across thin
+              ///< material (see docs/method.md, "The guard")
+};
+
+/// Judges single pieces of a split face by their normals.
+class PieceJudge {
+public:
+    PieceJudge(const InputSurface& input, const ReferenceNormals& reference,
+               const PieceVertices& ids, double thin_material_angle_deg)
+        : input_(input),
+          reference_(reference),
+          ids_(ids),
+          thin_cosine_(std::cos(thin_material_angle_deg * std::numbers::pi / 180.0)) {}
+
+    /// The worst fault of the pieces face f is cut into with `slots`.
+    Fault fault_of(const PointSlots& slots, Index f) const {
+        Fault worst = Fault::None;
+        for_each_piece(input_.mesh, slots, ids_, f, [&](Index a, Index b, Index c) {
+            const Fault found = piece_fault(f, a, b, c);
+            if (worst == Fault::None || found == Fault::Quality) worst = found;
+        });
+        return worst;
+    }
+
+private:
+    /// Piece (a, b, c) of face f:
+    /// - Quality: it has no area, or turns against the reference normal of an input vertex;
+    /// - Guard: it turns against face f although f itself is sound at the piece's input
+    ///   vertices (the paper's §5.3 flip: M' projects outside the face it is derived from;
+    ///   only where f leans past a vertex's surface may pieces rightly turn from f), or it
+    ///   joins vertices whose references differ by more than the thin-material angle (material too
+    ///   thin for the mesh) and does not clear each of them by twice its margin: there the
+    ///   piece stands almost on edge to both surfaces, and an error in either normal flips it.
+    Fault piece_fault(Index f, Index a, Index b, Index c) const {
+        const Vec3 n =
+            (ids_.position(b) - ids_.position(a)).cross(ids_.position(c) - ids_.position(a));
+        if (n.norm() <= kCollapsedAreaRatio * longest_edge_squared(f)) return Fault::Quality;
+        const bool thin = spans_thin_material(a, b, c);
+        const Vec3& face_normal = input_.normals.face[f];
+        bool face_leans_past_surface = false;
+        Fault found = Fault::None;
+        for (Index v : {a, b, c}) {
+            if (!ids_.is_original(v)) continue;
+            const Reference r = reference_.at(v);
+            if (r.normal.isZero(0.0)) continue;
+            const double min_cosine = sin_deg(r.margin_deg);
+            if (n.dot(r.normal) <= min_cosine * n.norm()) return Fault::Quality;
+            if (thin && n.dot(r.normal) <= sin_deg(std::min(2.0 * r.margin_deg, 89.0)) * n.norm()) {
+                found = Fault::Guard;
+            }
+            face_leans_past_surface =
+                face_leans_past_surface || face_normal.dot(r.normal) <= min_cosine;
+        }
+        if (!face_leans_past_surface && n.dot(face_normal) <= 0.0) return Fault::Guard;
+        return found;
+    }
+
+    double longest_edge_squared(Index f) const {
+        const Triangle& t = input_.mesh.triangles[f];
+        double longest = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            longest = std::max(longest,
+                               (input_.mesh.positions[t[(k + 1) % 3]] - input_.mesh.positions[t[k]])
+                                   .squaredNorm());
+        }
+        return longest;
+    }
+
+    bool spans_thin_material(Index a, Index b, Index c) const {
+        const std::array<Index, 3> v{a, b, c};
+        for (int i = 0; i < 3; ++i) {
+            for (int j = i + 1; j < 3; ++j) {
+                if (!ids_.is_original(v[i]) || !ids_.is_original(v[j])) continue;
+                if (reference_.at(v[i]).normal.dot(reference_.at(v[j]).normal) < thin_cosine_)
+                    return true;
+            }
+        }
+        return false;
+    }
+
+    const InputSurface& input_;
+    const ReferenceNormals& reference_;
+    const PieceVertices& ids_;
+    double thin_cosine_;
+};
+
+/// Faces with a point that need a check, and the faces to check again after a repair. Each
+/// face is queued at most once at a time.
+class Worklist {
+public:
+    Worklist(std::size_t face_count, std::span<const Index> first)
+        : faces_(first.begin(), first.end()), queued_(face_count, 0) {
+        for (Index f : first) queued_[f] = 1;
+    }
+    bool empty() const { return next_ == faces_.size(); }
+    Index pop() {
+        const Index f = faces_[next_++];
+        queued_[f] = 0;
+        return f;
+    }
+    void push(Index f) {
+        if (queued_[f]) return;
+        queued_[f] = 1;
+        faces_.push_back(f);
+    }
+
+private:
+    std::vector<Index> faces_;
+    std::vector<std::uint8_t> queued_;
+    std::size_t next_ = 0;
+};
+
+/// The slots being decided, and the repairs that change them. Every change is one of two
+/// kinds, which is what bounds the work: a point leaves a slot for good (a slot never gets a
+/// point back), or an edge's point is replaced by the corner point of one of its faces, at most
+/// once per edge (`snapped`). So there are at most as many changes as slots holding a point at
+/// the start, plus as many as edges holding one.
+class Repairs {
+public:
+    Repairs(const Connectivity& c, PointSlots slots, const PieceJudge& judge)
+        : c_(c), slots_(std::move(slots)), judge_(judge), snapped_(c.twin.size(), 0) {}
+
+    const PointSlots& slots() const { return slots_; }
+    Fault fault_of(Index f) const { return judge_.fault_of(slots_, f); }
+
+    /// Makes face f split soundly by changing as little as possible, in this order:
+    /// - drop a single point (the first that is enough, in slot order): two close points out
+    ///   of order along the sharp edge make a flipped sliver, and the one kept still restores
+    ///   the edge;
+    /// - in a corner triangle, split one edge at the corner point instead of its own point:
+    ///   where a sharp edge ends at a corner, eq. 5.2 can put the point beyond the corner on
+    ///   the edge's extension, and the corner is where that edge really stops;
+    /// - drop every point of the face.
+    /// Returns the number of points dropped.
+    std::size_t repair(Index f) {
+        for (int i = 0; i < 4; ++i) {
+            if (*slot(f, i) != kNoIndex && try_replacing(f, i, kNoIndex)) return 1;
+        }
+        const Index corner = slots_.corner_point[f];
+        const bool has_snapped_edge =
+            *slot(f, 0) == corner || *slot(f, 1) == corner || *slot(f, 2) == corner;
+        for (int i = 0; i < 3 && corner != kNoIndex && !has_snapped_edge; ++i) {
+            if (*slot(f, i) == kNoIndex || snapped_[3 * f + static_cast<Index>(i)]) continue;
+            if (try_replacing(f, i, corner)) {
+                mark_snapped(f, i);
+                return 0;
+            }
+        }
+        std::size_t dropped = 0;
+        for (int i = 0; i < 4; ++i) {
+            if (*slot(f, i) == kNoIndex) continue;
+            set(f, i, kNoIndex);
+            ++dropped;
+        }
+        return dropped;
+    }
+
+private:
+    /// Slot i of face f: its half-edges 0..2, then its corner (3).
+    Index* slot(Index f, int i) {
+        return i < 3 ? &slots_.edge_point[3 * f + static_cast<Index>(i)] : &slots_.corner_point[f];
+    }
+    /// Sets slot i of face f, and for an edge the same slot seen from the face across it.
+    void set(Index f, int i, Index value) {
+        *slot(f, i) = value;
+        if (i == 3) return;
+        const Index twin = c_.twin[3 * f + static_cast<Index>(i)];
+        if (twin != kNoIndex) slots_.edge_point[twin] = value;
+    }
+    void mark_snapped(Index f, int i) {
+        const Index h = 3 * f + static_cast<Index>(i);
+        snapped_[h] = 1;
+        if (c_.twin[h] != kNoIndex) snapped_[c_.twin[h]] = 1;
+    }
+    /// Puts `replacement` in slot i of face f if the face then splits without fault.
+    bool try_replacing(Index f, int i, Index replacement) {
+        const Index kept = *slot(f, i);
+        *slot(f, i) = replacement;
+        const bool sound = fault_of(f) == Fault::None;
+        *slot(f, i) = kept;
+        if (sound) set(f, i, replacement);
+        return sound;
+    }
+
+    const Connectivity& c_;
+    PointSlots slots_;
+    const PieceJudge& judge_;
+    std::vector<std::uint8_t> snapped_;  ///< per half-edge (#3F): its edge was snapped once
+};
+
+/// The candidates' slots less the withdrawn points.
+PointSlots starting_slots(const SharpPoints& candidates, std::span<const std::uint8_t> withdrawn) {
+    PointSlots slots = candidates.slots;
+    if (withdrawn.empty()) return slots;
+    for (Index& id : slots.edge_point) {
+        if (id != kNoIndex && withdrawn[id]) id = kNoIndex;
+    }
+    for (Index& id : slots.corner_point) {
+        if (id != kNoIndex && withdrawn[id]) id = kNoIndex;
+    }
+    return slots;
+}
+
+std::vector<Index> faces_with_points(const PointSlots& slots) {
+    std::vector<Index> faces;
+    for (Index f = 0; f < slots.corner_point.size(); ++f) {
+        if (slots.has_points(f)) faces.push_back(f);
+    }
+    return faces;
+}
+
+/// Every slot of `accepted` holds the point it held among the candidates, its face's corner
+/// point (a snapped edge), or none: the guard only takes away.
+bool only_takes_away(const PointSlots& accepted, const SharpPoints& candidates,
+                     const Connectivity& c) {
+    for (Index h = 0; h < accepted.edge_point.size(); ++h) {
+        const Index id = accepted.edge_point[h];
+        if (id == kNoIndex || id == candidates.slots.edge_point[h]) continue;
+        const Index twin = c.twin[h];
+        const bool is_corner_of_a_face =
+            id == candidates.slots.corner_point[face_of(h)] ||
+            (twin != kNoIndex && id == candidates.slots.corner_point[face_of(twin)]);
+        if (!is_corner_of_a_face) return false;
+    }
+    for (Index f = 0; f < accepted.corner_point.size(); ++f) {
+        const Index id = accepted.corner_point[f];
+        if (id != kNoIndex && id != candidates.slots.corner_point[f]) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+GuardedPoints guard_points(const InputSurface& input, const FeatureNormals& feature_normals,
+                           const SharpPoints& candidates, std::span<const std::uint8_t> withdrawn,
+                           const GuardOptions& options) {
+    if (!(options.thin_material_angle_deg > 0.0 && options.thin_material_angle_deg <= 180.0)) {
+        throw InvalidInput("guard: thin-material angle must lie in (0, 180] degrees");
+    }
+    if (!withdrawn.empty() && withdrawn.size() != candidates.points.size()) {
+        throw InvalidInput("guard: " + std::to_string(withdrawn.size()) + " withdrawal flags for " +
+                           std::to_string(candidates.points.size()) + " points");
+    }
+    const PieceVertices ids(input.mesh, candidates.points);
+    const ReferenceNormals reference{feature_normals, input.normals.vertex};
+    const PieceJudge judge(input, reference, ids, options.thin_material_angle_deg);
+    Repairs repairs(input.connectivity, starting_slots(candidates, withdrawn), judge);
+    const std::vector<Index> touched = faces_with_points(repairs.slots());
+
+    // Bound: a face is popped once at the start and once per repair of a face across one of
+    // its edges; repairs are bounded as Repairs says (GuardReport::repairs).
+    GuardReport report;
+    Worklist work(input.mesh.face_count(), touched);
+    while (!work.empty()) {
+        const Index f = work.pop();
+        if (!repairs.slots().has_points(f)) continue;
+        const Fault fault = repairs.fault_of(f);
+        if (fault == Fault::None) continue;
+        (fault == Fault::Quality ? report.refused_by_quality : report.refused_by_guard) +=
+            repairs.repair(f);
+        ++report.repairs;
+        for (Index k = 0; k < 3; ++k) {
+            const Index twin = input.connectivity.twin[3 * f + k];
+            if (twin != kNoIndex) work.push(face_of(twin));
+        }
+    }
+    GuardedPoints out{repairs.slots(), report};
+    RESHARP_EXPENSIVE_ASSERT(only_takes_away(out.accepted, candidates, input.connectivity));
+    return out;
+}
+
+}  // namespace resharp

@@ -1,0 +1,95 @@
+#include "resharp/restoration/harm_check.h"
+
+#include <gtest/gtest.h>
+
+#include "resharp/core/errors.h"
+#include "resharp/eval/self_intersections.h"
+#include "resharp/pipeline/restore.h"
+#include "strip.h"
+
+namespace resharp {
+namespace {
+
+/// The strip split at `point` on edge a1-b0, with no guard in between.
+SplitMesh split_at(const test::Strip& s, const Vec3& point) {
+    SharpPoints points = test::points_on_edge_a1_b0(s);
+    points.points[0] = point;
+    return split_faces(s.mesh, points.points, points.slots);
+}
+
+TEST(HarmCheck, TheIdealSplitDoesNoHarm) {
+    const test::Strip s = test::make_strip();
+    const HarmReport r = check_harm(s.surface(), split_at(s, Vec3(0, 0, 0.75)));
+    EXPECT_TRUE(r.is_harmless());
+    EXPECT_EQ(r.turned + r.folded + r.crossing, 0u);
+}
+
+TEST(HarmCheck, APieceTurnedOverIsHarm) {
+    const test::Strip s = test::make_strip();
+    const HarmReport r = check_harm(s.surface(), split_at(s, Vec3(-2.0, 3.0, 0.75)));
+    EXPECT_GE(r.turned, 1u);
+    EXPECT_EQ(r.harmful_faces, (std::vector<Index>{0, 1}));
+}
+
+TEST(HarmCheck, PiecesFoldedOntoEachOtherAreHarm) {
+    // In face 0's plane but beyond its edge a0-b0: piece (a0, M, b0) folds back onto
+    // (a0, a1, M), 180 degrees, where the input face was flat.
+    const test::Strip s = test::make_strip();
+    const Vec3 a0 = s.mesh.positions[0], a1 = s.mesh.positions[1], b0 = s.mesh.positions[2];
+    const Vec3 beyond = (a0 + b0) / 2.0 + 0.3 * ((a0 + b0) / 2.0 - a1);
+    const SplitMesh out = split_at(s, beyond);
+    const HarmReport r = check_harm(s.surface(), out);
+    EXPECT_GE(r.folded, 1u);
+    EXPECT_FALSE(r.is_harmless());
+    EXPECT_THROW(check_harm(s.surface(), out, {.fold_angle_deg = 80.0}), InvalidInput);
+}
+
+/// The strip with a triangle hanging from b0 into the space between face 0 and the sharp edge,
+/// where the pieces of the split go.
+test::Strip strip_with_blocker() {
+    test::Strip s = test::make_strip();
+    const Vec3 a0 = s.mesh.positions[0], b0 = s.mesh.positions[2], m(0, 0, 0.75);
+    const Vec3 inside = (a0 + 2.0 * m + b0) / 4.0;  // on piece (a0, M, b0)
+    const Vec3 across = (m - a0).cross(b0 - a0).normalized();
+    s.mesh.positions.push_back(inside + 0.1 * across);
+    s.mesh.positions.push_back(inside - 0.03 * across);
+    s.mesh.triangles.push_back({2, 4, 5});
+    s.rebuild();
+    return s;
+}
+
+TEST(HarmCheck, PiecesCuttingThroughANearbyFaceAreHarmUnlessTheCheckIsOff) {
+    const test::Strip s = strip_with_blocker();
+    ASSERT_TRUE(eval::self_intersecting_pairs(s.mesh).empty());
+    const SplitMesh out = split_at(s, Vec3(0, 0, 0.75));
+    ASSERT_FALSE(eval::self_intersecting_pairs(out.mesh).empty());
+    const HarmReport r = check_harm(s.surface(), out);
+    EXPECT_GE(r.crossing, 1u);
+    EXPECT_EQ(r.turned, 0u);
+    EXPECT_FALSE(r.is_harmless());
+    EXPECT_TRUE(check_harm(s.surface(), out, {.check_crossings = false}).is_harmless());
+}
+
+TEST(HarmCheck, RestoreUndoesThePointWhosePiecesCrossAFace) {
+    const test::Strip s = strip_with_blocker();
+    RestoreOptions options;
+    options.features.tiny_patch_faces = 0;
+    const FeatureNormals& exact = s.feature_normals;
+    BandClassification bands;
+    bands.is_crossing.assign(3 * s.mesh.face_count(), 0);
+    bands.face_role.assign(s.mesh.face_count(), BandRole::None);
+    const SharpPoints wanted = test::points_on_edge_a1_b0(s);
+    for (Index h = 0; h < bands.is_crossing.size(); ++h) {
+        bands.is_crossing[h] = wanted.slots.edge_point[h] != kNoIndex;
+    }
+    bands.face_role[0] = bands.face_role[1] = BandRole::Edge;
+    const BandRestoration r = restore_bands(s.surface(), bands, exact, options);
+    EXPECT_EQ(r.undone_points, 1u);
+    EXPECT_EQ(r.rounds, 2u);
+    EXPECT_FALSE(r.rounds_exhausted);
+    EXPECT_EQ(r.output.mesh.triangles, s.mesh.triangles);
+    EXPECT_TRUE(eval::self_intersecting_pairs(r.output.mesh).empty());
+}
+
+}  // namespace
+}  // namespace resharp

@@ -1,0 +1,54 @@
+#pragma once
+// A strip of two chamfer triangles across a convex right-angle edge along z, the smallest band
+// the guard, the split and the harm check can be tested on: a0, a1 on the top face y = 0, b0, b1
+// on the side face x = 0; the crossing edge a1-b0 has its ideal point at (0, 0, 0.75).
+
+#include "resharp/mesh/connectivity.h"
+#include "resharp/mesh/geometry.h"
+#include "resharp/restoration/band_classification.h"
+#include "resharp/restoration/feature_normals.h"
+#include "resharp/restoration/input_surface.h"
+#include "resharp/restoration/sharp_points.h"
+
+namespace resharp::test {
+
+struct Strip {
+    Mesh mesh;
+    Connectivity connectivity;
+    SurfaceNormals normals;
+    FeatureNormals feature_normals;  ///< exact: the top's and the side's normals
+
+    InputSurface surface() const { return {mesh, connectivity, normals}; }
+    /// Rebuilds adjacency and normals after the mesh changed.
+    void rebuild() {
+        connectivity = build_connectivity(mesh);
+        normals = surface_normals(mesh, connectivity);
+        feature_normals.normal.resize(mesh.vertex_count(), Vec3::Zero());
+        feature_normals.fit_correction_deg.resize(mesh.vertex_count(), 0.0f);
+    }
+};
+
+inline Strip make_strip() {
+    Strip s;
+    s.mesh.positions = {{-0.3, 0, 0}, {-0.25, 0, 1}, {0, -0.2, 0.5}, {0, -0.3, 1.5}};
+    s.mesh.triangles = {{0, 1, 2}, {1, 3, 2}};
+    s.feature_normals.normal = {{0, 1, 0}, {0, 1, 0}, {1, 0, 0}, {1, 0, 0}};
+    s.rebuild();
+    return s;
+}
+
+/// The point of the crossing edge a1-b0, placed by eq. 5.2 with the exact normals.
+inline SharpPoints points_on_edge_a1_b0(const Strip& s) {
+    BandClassification bands;
+    bands.is_crossing.assign(3 * s.mesh.face_count(), 0);
+    bands.face_role.assign(s.mesh.face_count(), BandRole::None);
+    bands.face_role[0] = bands.face_role[1] = BandRole::Edge;
+    for (Index h = 0; h < bands.is_crossing.size(); ++h) {
+        const Index u = tail_vertex(s.mesh, h), v = head_vertex(s.mesh, h);
+        if ((u == 1 && v == 2) || (u == 2 && v == 1)) bands.is_crossing[h] = 1;
+    }
+    return place_sharp_points(s.mesh, s.connectivity, s.normals.face, bands,
+                              s.feature_normals.normal);
+}
+
+}  // namespace resharp::test
