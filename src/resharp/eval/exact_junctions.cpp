@@ -46,9 +46,27 @@ public:
           smooth_cosine_(cosine_of(options.smooth_angle_deg)) {}
 
     Outcome find(const IdealPoint& p) const {
-        const std::size_t n = p.kind == IdealKind::Edge ? 2 : 3;
-        std::array<ImplicitSurface, 3> surfaces;
-        for (std::size_t k = 0; k < n; ++k) {
+        Surfaces surfaces;
+        if (const std::optional<Outcome> stop = vertex_surfaces(p, surfaces)) return *stop;
+        // Each round either settles or hands a side over to the surface that continues it
+        // there, so at most max_continuations + 1 solves.
+        for (int round = 0; round <= options_.max_continuations; ++round) {
+            const std::optional<Vec3> x =
+                p.kind == IdealKind::Edge ? edge(p, surfaces) : corner(p, surfaces);
+            if (!x) return {};
+            if (const std::optional<Outcome> done = check_sides(p, *x, surfaces)) return *done;
+        }
+        return {JunctionStatus::NotBounding};
+    }
+
+private:
+    using Surfaces = std::array<ImplicitSurface, 3>;
+
+    static std::size_t side_count(const IdealPoint& p) { return p.kind == IdealKind::Edge ? 2 : 3; }
+
+    /// The surfaces of p's vertices into `surfaces`, or the outcome if they end the search.
+    std::optional<Outcome> vertex_surfaces(const IdealPoint& p, Surfaces& surfaces) const {
+        for (std::size_t k = 0; k < side_count(p); ++k) {
             const Index w = p.vertices[k];
             const MachinedSolid::SurfaceNear s =
                 solid_.surface_near(oracle_.surfaces[w], mesh_.positions[w]);
@@ -58,50 +76,48 @@ public:
                                    ", which the job does not make (oracle and job differ)");
             }
             if (s.kind == MachinedSolid::SurfaceKind::Sampled) {
-                return {JunctionStatus::SampledSurface};
+                return Outcome{JunctionStatus::SampledSurface};
             }
-            if (!(s.distance <= options_.on_surface_tolerance * h())) return {};
+            if (!(s.distance <= options_.on_surface_tolerance * h())) return Outcome{};
             surfaces[k] = *s.surface;
         }
-        // Each round either settles or hands a side over to the surface that continues it
-        // there, so at most max_continuations + 1 solves.
-        for (int round = 0; round <= options_.max_continuations; ++round) {
-            const std::optional<Vec3> x =
-                p.kind == IdealKind::Edge ? edge(p, surfaces) : corner(p, surfaces);
-            if (!x) return {};
-            // Along an edge's junction curve the probes move across it only.
-            const Vec3 tangent = n == 2 ? surfaces[0]
-                                              .evaluate(*x)
-                                              .gradient.cross(surfaces[1].evaluate(*x).gradient)
-                                              .normalized()
-                                        : Vec3::Zero();
-            bool settled = true;
-            for (std::size_t k = 0; k < n; ++k) {
-                const Probe probe =
-                    probe_side(surfaces[k], *x, mesh_.positions[p.vertices[k]], tangent);
-                if (probe.result == Probe::Result::Fails) return {JunctionStatus::NotBounding, *x};
-                if (probe.result == Probe::Result::Bounds) continue;
-                const MachinedSolid::SurfaceNear next =
-                    solid_.surface_near(probe.surface, probe.at);
-                if (next.kind == MachinedSolid::SurfaceKind::Sampled) {
-                    return {JunctionStatus::SampledSurface, *x};
-                }
-                if (!next.surface) return {JunctionStatus::NotBounding, *x};
-                surfaces[k] = *next.surface;
-                settled = false;
-            }
-            if (settled) return {JunctionStatus::Exact, *x};
-        }
-        return {JunctionStatus::NotBounding};
+        return std::nullopt;
     }
 
-private:
+    /// Probes every side of the junction x: the outcome once decided, or nothing after handing
+    /// a side over to the surface that continues it (then `surfaces` holds that one).
+    std::optional<Outcome> check_sides(const IdealPoint& p, const Vec3& x,
+                                       Surfaces& surfaces) const {
+        // Along an edge's junction curve the probes move across it only.
+        const Vec3 tangent = p.kind == IdealKind::Edge
+                                 ? surfaces[0]
+                                       .evaluate(x)
+                                       .gradient.cross(surfaces[1].evaluate(x).gradient)
+                                       .normalized()
+                                 : Vec3::Zero();
+        bool settled = true;
+        for (std::size_t k = 0; k < side_count(p); ++k) {
+            const Probe probe = probe_side(surfaces[k], x, mesh_.positions[p.vertices[k]], tangent);
+            if (probe.result == Probe::Result::Fails)
+                return Outcome{JunctionStatus::NotBounding, x};
+            if (probe.result == Probe::Result::Bounds) continue;
+            const MachinedSolid::SurfaceNear next = solid_.surface_near(probe.surface, probe.at);
+            if (next.kind == MachinedSolid::SurfaceKind::Sampled) {
+                return Outcome{JunctionStatus::SampledSurface, x};
+            }
+            if (!next.surface) return Outcome{JunctionStatus::NotBounding, x};
+            surfaces[k] = *next.surface;
+            settled = false;
+        }
+        if (settled) return Outcome{JunctionStatus::Exact, x};
+        return std::nullopt;
+    }
+
     double h() const { return options_.solver.pitch; }
 
     /// The junction nearest the edge's midpoint, searched from the eq. 5.2 point, then from the
     /// midpoint itself (where eq. 5.2 starts it on another branch).
-    std::optional<Vec3> edge(const IdealPoint& p,
-                             const std::array<ImplicitSurface, 3>& surfaces) const {
+    std::optional<Vec3> edge(const IdealPoint& p, const Surfaces& surfaces) const {
         const Vec3 midpoint =
             0.5 * (mesh_.positions[p.vertices[0]] + mesh_.positions[p.vertices[1]]);
         for (const Vec3& start : {p.position, midpoint}) {
@@ -112,8 +128,7 @@ private:
         return std::nullopt;
     }
 
-    std::optional<Vec3> corner(const IdealPoint& p,
-                               const std::array<ImplicitSurface, 3>& surfaces) const {
+    std::optional<Vec3> corner(const IdealPoint& p, const Surfaces& surfaces) const {
         const Vec3 centroid = (mesh_.positions[p.vertices[0]] + mesh_.positions[p.vertices[1]] +
                                mesh_.positions[p.vertices[2]]) /
                               3.0;
