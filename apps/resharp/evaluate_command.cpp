@@ -1,5 +1,5 @@
 // `resharp evaluate`: scores a restored mesh against the simulator's oracle and the exact
-// surface (design.md §5, docs/results.md): ideal points on the exact junction of the job's
+// surface (docs/design.md §5, docs/results.md): ideal points on the exact junction of the job's
 // surfaces, and the first-order (eq. 5.2) ones beside them. A thin layer over resharp::eval.
 
 #include <iostream>
