@@ -1,5 +1,6 @@
 // `resharp evaluate`: scores a restored mesh against the simulator's oracle and the exact
-// surface (design.md §5, docs/results.md). A thin layer over resharp::eval.
+// surface (docs/design.md §5, docs/results.md): ideal points on the exact junction of the job's
+// surfaces, and the first-order (eq. 5.2) ones beside them. A thin layer over resharp::eval.
 
 #include <iostream>
 #include <map>
@@ -17,6 +18,7 @@
 #include "resharp/eval/detection.h"
 #include "resharp/eval/evaluation_files.h"
 #include "resharp/eval/exact_creases.h"
+#include "resharp/eval/exact_junctions.h"
 #include "resharp/eval/ideal_points.h"
 #include "resharp/eval/miss_causes.h"
 #include "resharp/eval/oracle_restoration.h"
@@ -47,6 +49,7 @@ struct EvaluateArguments {
     double sample_pitch = 0.25;  // exact samples: ray grid pitch in h
     double grid_phase = sim::SimulationOptions{}.grid_phase;
     eval::IdealPointOptions ideal;
+    eval::ExactJunctionOptions junctions;
     eval::RestorationOptions restoration;
     eval::SurfaceMetricsOptions surface;
     eval::CadMetricsOptions cad;
@@ -102,6 +105,26 @@ json to_json(const eval::MissCauses& c) {
     return {{"edges", edges}, {"corners", corners}};
 }
 
+json to_json(const eval::RestorationScore& s) {
+    return {{"edges", s.ideal_edges},
+            {"corners", s.ideal_corners},
+            {"restored_edges", s.restored_edges},
+            {"restored_corners", s.restored_corners},
+            {"beyond_chord", s.beyond_chord},
+            {"restored_beyond_chord", s.restored_beyond_chord},
+            {"new_vertices", s.new_vertices}};
+}
+
+/// Per JunctionStatus but Exact: the ideal points left out of the exact-junction rate.
+json counted_apart(const eval::ExactIdealPoints& ideal) {
+    json apart;
+    for (std::size_t k = 1; k < eval::kJunctionStatusCount; ++k) {
+        const std::string name(eval::junction_status_name(static_cast<eval::JunctionStatus>(k)));
+        apart[name] = {{"edges", ideal.edges[k]}, {"corners", ideal.corners[k]}};
+    }
+    return apart;
+}
+
 /// The restored mesh and what the method detected, from restore() here or from files.
 struct Restored {
     Mesh mesh;
@@ -141,21 +164,22 @@ Restored obtain_restored(const EvaluateArguments& args, const Mesh& input,
 }
 
 /// The exact surface the input was made from, sampled again on a finer grid: a job's program
-/// milled again, or a CSG solid (then also its true sharp edges).
+/// milled again (with the solid it mills, for the exact junctions), or a CSG solid (for its
+/// true sharp edges).
 struct ExactReference {
     double h = 0.0;  // pitch of the input's grid, mm
     sim::DexelGrid grid;
-    std::optional<sim::CsgSolid> solid;
+    std::optional<eval::MachinedSolid> machined;
+    std::optional<sim::CsgSolid> csg;
 };
 
 ExactReference exact_reference(const EvaluateArguments& args) {
     ExactReference r;
     if (!args.solid.empty()) {
-        r.solid.emplace(sim::read_csg(args.solid));
-        r.h = resolve_pitch(args.grid, r.solid->bounds(), 0.0);
+        r.csg.emplace(sim::read_csg(args.solid));
+        r.h = resolve_pitch(args.grid, r.csg->bounds(), 0.0);
         r.grid = sim::sample_solid(
-            sim::phased_grid(r.solid->bounds(), r.h * args.sample_pitch, args.grid_phase),
-            *r.solid);
+            sim::phased_grid(r.csg->bounds(), r.h * args.sample_pitch, args.grid_phase), *r.csg);
         return r;
     }
     const sim::Job job = sim::read_job(args.job);
@@ -165,6 +189,7 @@ ExactReference exact_reference(const EvaluateArguments& args) {
     options.pitch = r.h * args.sample_pitch;
     options.grid_phase = args.grid_phase;
     r.grid = sim::simulate(job.stock, job.tools, path, options).grid;
+    r.machined.emplace(job.stock, job.tools, path, sim::SimulationOptions{.pitch = r.h});
     return r;
 }
 
@@ -185,8 +210,26 @@ json to_json(const eval::CadMetrics& m) {
             {"crease_length_ratio", number(c.length_ratio)}};
 }
 
+/// The "cad" block: the measures of a CAD part against the CSG solid, input and output.
+json cad_block(const ExactReference& reference, const Mesh& input, const Mesh& output,
+               const eval::SurfaceMetrics& surface_in, const eval::SurfaceMetrics& surface_out,
+               eval::CadMetricsOptions cad) {
+    const eval::CurveSamples creases = eval::sample_exact_creases(
+        *reference.csg, reference.grid, {.sharp_angle_deg = cad.sharp_angle_deg});
+    cad.spacing = reference.grid.spec.pitch;
+    const double diagonal = reference.csg->bounds().diagonal().norm();
+    return {
+        {"output", to_json(eval::measure_cad_part(output, surface_out, creases, diagonal, cad))},
+        {"input", to_json(eval::measure_cad_part(input, surface_in, creases, diagonal, cad))},
+        {"diagonal_mm", diagonal},
+        {"sharp_angle_deg", cad.sharp_angle_deg},
+        {"tau_diagonals", cad.tolerance},
+        {"stray_beyond_diagonals", cad.far}};
+}
+
 void run_evaluate(EvaluateArguments args) {
     const StageTimer total;
+    const StageTimer sampling;
     const ExactReference reference = exact_reference(args);
     const double h = reference.h;
     args.restoration.pitch = args.surface.pitch = h;
@@ -197,32 +240,57 @@ void run_evaluate(EvaluateArguments args) {
     const Mesh& output = restored.mesh;
     eval::check_output_extends_input(input, output);
 
-    const StageTimer sampling;
     const eval::SurfaceSamples exact = eval::sample_exact_surface(reference.grid);
     const double sampling_seconds = std::chrono::duration<double>(sampling.elapsed()).count();
 
-    const auto ideal = eval::find_ideal_points(input, oracle, args.ideal);
+    const StageTimer junctions;
+    const auto first_order = eval::find_ideal_points(input, oracle, args.ideal);
+    // A CSG solid's surfaces have no eval::MachinedSolid: its ideal points stay first order.
+    eval::ExactIdealPoints ideal{first_order, {}, {}};
+    eval::RestorationOptions on_junction = args.restoration;
+    if (reference.machined) {
+        args.junctions.solver.pitch = h;
+        args.junctions.smooth_angle_deg = args.ideal.sharp_angle_deg;
+        ideal = eval::find_exact_ideal_points(input, oracle, first_order, *reference.machined,
+                                              args.junctions);
+        on_junction.count_input_vertices = true;
+    }
+    const double junction_seconds = std::chrono::duration<double>(junctions.elapsed()).count();
+
     const eval::RestorationScore score =
-        eval::score_restoration(input, output, ideal, exact, args.restoration);
-    const eval::MissCauses causes =
-        eval::find_miss_causes(input, output, ideal, score.ideal_distance,
-                               args.restoration.tolerance * h, restored.segmentation);
+        eval::score_restoration(input, output, ideal.points, exact, on_junction);
+    const eval::RestorationScore first =
+        eval::score_restoration(input, output, first_order, exact, args.restoration);
+    const double tau = args.restoration.tolerance * h;
 
     json j;
+    j["ideal_points_on"] = reference.machined ? "the exact junction" : "first order (eq. 5.2)";
     j["restoration_rate"] = score.rate;
+    j["restoration_rate_first_order"] = first.rate;
+    // The input's own rate on the exact junction: the points an input vertex already restores.
+    j["restoration_rate_input"] = score.ideal_edges + score.ideal_corners == 0
+                                      ? 1.0
+                                      : double(score.restored_by_input_vertices) /
+                                            double(score.ideal_edges + score.ideal_corners);
     j["restoration_rate_edges"] = score.rate_edges;
     j["restoration_rate_corners"] = score.rate_corners;
     j["restoration_rate_within_reach"] = score.rate_within_reach;
     j["false_insertions"] = score.false_insertions;
     j["max_new_vertex_distance"] = score.max_new_vertex_distance;
-    j["ideal_points"] = {{"edges", score.ideal_edges},
-                         {"corners", score.ideal_corners},
-                         {"restored_edges", score.restored_edges},
-                         {"restored_corners", score.restored_corners},
-                         {"beyond_chord", score.beyond_chord},
-                         {"restored_beyond_chord", score.restored_beyond_chord},
-                         {"new_vertices", score.new_vertices}};
-    j["miss_causes"] = to_json(causes);
+    j["ideal_points"] = to_json(score);
+    j["ideal_points"]["restored_by_input_vertices"] = score.restored_by_input_vertices;
+    j["ideal_points"]["counted_apart"] = counted_apart(ideal);
+    j["miss_causes"] = to_json(eval::find_miss_causes(
+        input, output, ideal.points, score.ideal_distance, tau, restored.segmentation));
+    j["first_order"] = {{"restoration_rate", first.rate},
+                        {"restoration_rate_edges", first.rate_edges},
+                        {"restoration_rate_corners", first.rate_corners},
+                        {"restoration_rate_within_reach", first.rate_within_reach},
+                        {"false_insertions", first.false_insertions},
+                        {"ideal_points", to_json(first)},
+                        {"miss_causes", to_json(eval::find_miss_causes(input, output, first_order,
+                                                                       first.ideal_distance, tau,
+                                                                       restored.segmentation))}};
     j["detection_source"] = restored.detection_source;
     j["detection_precision"] = nullptr;
     j["detection_recall"] = nullptr;
@@ -253,20 +321,8 @@ void run_evaluate(EvaluateArguments args) {
     const eval::SurfaceMetrics surface_in =
         eval::compare_surfaces(input, input_samples, exact, args.surface);
     j["surface"] = {{"output", to_json(surface_out)}, {"input", to_json(surface_in)}};
-    if (reference.solid) {
-        const eval::CurveSamples creases = eval::sample_exact_creases(
-            *reference.solid, reference.grid, {.sharp_angle_deg = args.cad.sharp_angle_deg});
-        eval::CadMetricsOptions cad = args.cad;
-        cad.spacing = reference.grid.spec.pitch;
-        const double diagonal = reference.solid->bounds().diagonal().norm();
-        j["cad"] = {
-            {"output",
-             to_json(eval::measure_cad_part(output, surface_out, creases, diagonal, cad))},
-            {"input", to_json(eval::measure_cad_part(input, surface_in, creases, diagonal, cad))},
-            {"diagonal_mm", diagonal},
-            {"sharp_angle_deg", cad.sharp_angle_deg},
-            {"tau_diagonals", cad.tolerance},
-            {"stray_beyond_diagonals", cad.far}};
+    if (reference.csg) {
+        j["cad"] = cad_block(reference, input, output, surface_in, surface_out, args.cad);
     }
 
     j["settings"] = {{"h_mm", h},
@@ -280,6 +336,7 @@ void run_evaluate(EvaluateArguments args) {
                      {"edge_f1_threshold_h", args.surface.edge_f1_threshold},
                      {"lengths", "mm"}};
     j["time_seconds"] = {{"exact_sampling", sampling_seconds},
+                         {"exact_junctions", junction_seconds},
                          {"total", std::chrono::duration<double>(total.elapsed()).count()}};
 
     if (!args.json.empty()) {
@@ -288,13 +345,16 @@ void run_evaluate(EvaluateArguments args) {
     }
     if (args.quiet) return;
     std::ostringstream s;
-    s << "restoration rate " << score.rate * 100 << " % (edges " << score.restored_edges << "/"
-      << score.ideal_edges << ", corners " << score.restored_corners << "/" << score.ideal_corners
-      << "), " << score.rate_within_reach * 100 << " % of the "
+    const std::size_t apart = first.ideal_edges + first.ideal_corners - ideal.points.size();
+    s << "restoration rate " << score.rate * 100 << " % on the exact junction (edges "
+      << score.restored_edges << "/" << score.ideal_edges << ", corners " << score.restored_corners
+      << "/" << score.ideal_corners << "; " << apart << " counted apart), "
+      << score.rate_within_reach * 100 << " % of the "
       << score.ideal_edges + score.ideal_corners - score.beyond_chord
-      << " points within reach of an edge split, false insertions " << score.false_insertions
-      << ", flipped " << j["flipped_triangles"] << ", self-intersections "
-      << valid_out.self_intersections << " (input " << valid_in.self_intersections << ")\n";
+      << " points within reach of an edge split; restoration rate first order (eq. 5.2) "
+      << first.rate * 100 << " %; false insertions " << score.false_insertions << ", flipped "
+      << j["flipped_triangles"] << ", self-intersections " << valid_out.self_intersections
+      << " (input " << valid_in.self_intersections << ")\n";
     if (j.contains("cad")) {
         const json& in = j["cad"]["input"];
         const json& out = j["cad"]["output"];
@@ -327,7 +387,7 @@ void add_evaluate_command(CLI::App& app) {
     command
         ->add_option("--solid", args->solid,
                      "the CSG solid file the mesh was sampled from (resharp simulate --solid), "
-                     "instead of --job")
+                     "instead of --job; its ideal points are first order (eq. 5.2)")
         ->excludes(job);
     add_grid_options(*command, args->grid,
                      "the job's; 100 cells for a solid; give what simulate was given");
