@@ -1,21 +1,24 @@
 // `resharp evaluate`: scores a restored mesh against the simulator's oracle and the exact
-// surface (design.md §5, docs/results.md). A thin layer over resharp::eval.
+// surface (docs/design.md §5, docs/results.md): ideal points on the exact junction of the job's
+// surfaces, and the first-order (eq. 5.2) ones beside them. A thin layer over resharp::eval.
 
-#include <array>
-#include <cmath>
-#include <cstdio>
 #include <iostream>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
-#include <unordered_map>
 
 #include "commands.h"
+#include "grid_choice.h"
 #include "resharp/core/errors.h"
 #include "resharp/core/stage_timer.h"
+#include "resharp/eval/cad_metrics.h"
 #include "resharp/eval/detection.h"
+#include "resharp/eval/evaluation_files.h"
+#include "resharp/eval/exact_creases.h"
+#include "resharp/eval/exact_junctions.h"
 #include "resharp/eval/ideal_points.h"
 #include "resharp/eval/miss_causes.h"
 #include "resharp/eval/oracle_restoration.h"
@@ -24,8 +27,8 @@
 #include "resharp/eval/validity.h"
 #include "resharp/io/atomic_file.h"
 #include "resharp/io/mesh_io.h"
-#include "resharp/io/ply.h"
 #include "resharp/pipeline/restore.h"
+#include "resharp/sim/csg_file.h"
 #include "resharp/sim/gcode.h"
 #include "resharp/sim/job.h"
 #include "resharp/sim/simulate.h"
@@ -36,7 +39,8 @@ namespace {
 using nlohmann::json;
 
 struct EvaluateArguments {
-    std::string input, oracle, job, output, segments, json;
+    std::string input, oracle, job, solid, output, segments, json;
+    GridChoice grid;             // the pitch the input was made with (a job's own by default)
     bool restore = false;        // run restore() here instead of reading --output
     bool exact_normals = false;  // with --restore: the oracle's normals replace eq. 5.1
     bool oracle_bands = false;   // with --restore: the split alone, on the oracle's bands
@@ -45,112 +49,12 @@ struct EvaluateArguments {
     double sample_pitch = 0.25;  // exact samples: ray grid pitch in h
     double grid_phase = sim::SimulationOptions{}.grid_phase;
     eval::IdealPointOptions ideal;
+    eval::ExactJunctionOptions junctions;
     eval::RestorationOptions restoration;
     eval::SurfaceMetricsOptions surface;
+    eval::CadMetricsOptions cad;
     bool quiet = false;
 };
-
-/// Positions as keys: binary STL holds floats, the oracle doubles, so both sides are keyed by
-/// their float rounding (two vertices of a grid mesh are never that close).
-struct PositionKey {
-    std::array<float, 3> c;
-    bool operator==(const PositionKey&) const = default;
-};
-struct PositionHash {
-    std::size_t operator()(const PositionKey& k) const {
-        std::size_t h = 0;
-        for (float f : k.c) h = h * 1000003u ^ std::hash<float>()(f);
-        return h;
-    }
-};
-PositionKey key_of(const Vec3& p) {
-    return {{static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())}};
-}
-
-using PositionIndex = std::unordered_map<PositionKey, Index, PositionHash>;
-
-PositionIndex index_positions(const std::vector<Vec3>& points) {
-    PositionIndex index;
-    for (std::size_t i = 0; i < points.size(); ++i) index.emplace(key_of(points[i]), Index(i));
-    return index;
-}
-
-const std::vector<double>& property(const io::PlyMesh& ply, const char* name,
-                                    const std::string& path) {
-    const std::vector<double>* values = ply.vertex_property(name);
-    if (!values) throw ReadError(path, std::string("no vertex property '") + name + "'");
-    return *values;
-}
-
-/// The oracle's normal and surface for every vertex of `input`, matched by position.
-eval::Oracle read_oracle(const std::string& path, const Mesh& input) {
-    const io::PlyMesh ply = io::read_ply_with_properties(path);
-    const auto &nx = property(ply, "nx", path), &ny = property(ply, "ny", path),
-               &nz = property(ply, "nz", path), &surface = property(ply, "surface", path);
-    const PositionIndex index = index_positions(ply.soup.points);
-    eval::Oracle oracle;
-    for (std::size_t v = 0; v < input.vertex_count(); ++v) {
-        const auto it = index.find(key_of(input.positions[v]));
-        if (it == index.end()) {
-            std::ostringstream s;
-            s << "input vertex " << v << " is not in the oracle " << path
-              << " (the oracle must come from the same simulation as the input)";
-            throw InvalidInput(s.str());
-        }
-        const Index o = it->second;
-        oracle.normals.push_back(Vec3(nx[o], ny[o], nz[o]).normalized());
-        oracle.surfaces.push_back(static_cast<std::int32_t>(surface[o]));
-    }
-    return oracle;
-}
-
-/// A restored mesh read from a file, renumbered so that it starts with the input's vertices
-/// (matched by position) and the new ones follow in the order the faces first use them.
-Mesh read_restored(const std::string& path, const Mesh& input) {
-    const Mesh read = weld(io::read_mesh(path));
-    const PositionIndex input_index = index_positions(input.positions);
-    std::vector<Index> renumber(read.vertex_count());
-    Mesh out{input.positions, {}};
-    std::vector<bool> seen(input.vertex_count(), false);
-    for (std::size_t v = 0; v < read.vertex_count(); ++v) {
-        const auto it = input_index.find(key_of(read.positions[v]));
-        if (it != input_index.end()) {
-            renumber[v] = it->second;
-            seen[it->second] = true;
-        } else {
-            renumber[v] = static_cast<Index>(out.positions.size());
-            out.positions.push_back(read.positions[v]);
-        }
-    }
-    for (std::size_t v = 0; v < seen.size(); ++v) {
-        if (!seen[v]) {
-            throw InvalidInput(path + ": input vertex " + std::to_string(v) +
-                               " is missing from the restored mesh");
-        }
-    }
-    for (const Triangle& t : read.triangles) {
-        out.triangles.push_back({renumber[t[0]], renumber[t[1]], renumber[t[2]]});
-    }
-    return out;
-}
-
-/// Face roles read back from `resharp restore --segments` (face colours, segments.cpp).
-std::vector<BandRole> read_segment_roles(const std::string& path, const Mesh& input) {
-    const io::PlyMesh ply = io::read_ply_with_properties(path);
-    const auto *r = ply.face_property("red"), *g = ply.face_property("green"),
-               *b = ply.face_property("blue");
-    if (!r || !g || !b) throw ReadError(path, "no face colours (red, green, blue)");
-    if (r->size() != input.face_count()) {
-        throw InvalidInput(path + ": face count differs from the input's");
-    }
-    std::vector<BandRole> roles(r->size(), BandRole::None);
-    for (std::size_t f = 0; f < roles.size(); ++f) {
-        const std::array<double, 3> c{(*r)[f], (*g)[f], (*b)[f]};
-        if (c == std::array<double, 3>{255, 210, 0}) roles[f] = BandRole::Edge;
-        if (c == std::array<double, 3>{230, 0, 230}) roles[f] = BandRole::Corner;
-    }
-    return roles;
-}
 
 json to_json(const eval::EdgeMetrics& e) {
     return {{"exact_edge_samples", e.exact_edge_samples},
@@ -201,6 +105,26 @@ json to_json(const eval::MissCauses& c) {
     return {{"edges", edges}, {"corners", corners}};
 }
 
+json to_json(const eval::RestorationScore& s) {
+    return {{"edges", s.ideal_edges},
+            {"corners", s.ideal_corners},
+            {"restored_edges", s.restored_edges},
+            {"restored_corners", s.restored_corners},
+            {"beyond_chord", s.beyond_chord},
+            {"restored_beyond_chord", s.restored_beyond_chord},
+            {"new_vertices", s.new_vertices}};
+}
+
+/// Per JunctionStatus but Exact: the ideal points left out of the exact-junction rate.
+json counted_apart(const eval::ExactIdealPoints& ideal) {
+    json apart;
+    for (std::size_t k = 1; k < eval::kJunctionStatusCount; ++k) {
+        const std::string name(eval::junction_status_name(static_cast<eval::JunctionStatus>(k)));
+        apart[name] = {{"edges", ideal.edges[k]}, {"corners", ideal.corners[k]}};
+    }
+    return apart;
+}
+
 /// The restored mesh and what the method detected, from restore() here or from files.
 struct Restored {
     Mesh mesh;
@@ -211,9 +135,9 @@ struct Restored {
 Restored obtain_restored(const EvaluateArguments& args, const Mesh& input,
                          const eval::Oracle& oracle) {
     if (!args.restore) {
-        Restored r{read_restored(args.output, input), {}, "none"};
+        Restored r{eval::read_restored(args.output, input), {}, "none"};
         if (!args.segments.empty()) {
-            r.segmentation.face_role = read_segment_roles(args.segments, input);
+            r.segmentation.face_role = eval::read_segment_roles(args.segments, input.face_count());
             r.detection_source = "segments file (face colours)";
         }
         return r;
@@ -239,53 +163,134 @@ Restored obtain_restored(const EvaluateArguments& args, const Mesh& input,
     return {std::move(result.mesh), std::move(result.segmentation), "restore() in process"};
 }
 
-sim::Simulation simulate_fine(const sim::Job& job, const EvaluateArguments& args) {
+/// The exact surface the input was made from, sampled again on a finer grid: a job's program
+/// milled again (with the solid it mills, for the exact junctions), or a CSG solid (for its
+/// true sharp edges).
+struct ExactReference {
+    double h = 0.0;  // pitch of the input's grid, mm
+    sim::DexelGrid grid;
+    std::optional<eval::MachinedSolid> machined;
+    std::optional<sim::CsgSolid> csg;
+};
+
+ExactReference exact_reference(const EvaluateArguments& args) {
+    ExactReference r;
+    if (!args.solid.empty()) {
+        r.csg.emplace(sim::read_csg(args.solid));
+        r.h = resolve_pitch(args.grid, r.csg->bounds(), 0.0);
+        r.grid = sim::sample_solid(
+            sim::phased_grid(r.csg->bounds(), r.h * args.sample_pitch, args.grid_phase), *r.csg);
+        return r;
+    }
+    const sim::Job job = sim::read_job(args.job);
+    r.h = resolve_pitch(args.grid, job.stock, job.pitch);
     const sim::ToolPath path = sim::read_gcode(job.program, {.start_position = job.start_position});
     sim::SimulationOptions options;
-    options.pitch = job.pitch * args.sample_pitch;
+    options.pitch = r.h * args.sample_pitch;
     options.grid_phase = args.grid_phase;
-    return sim::simulate(job.stock, job.tools, path, options);
+    r.grid = sim::simulate(job.stock, job.tools, path, options).grid;
+    r.machined.emplace(job.stock, job.tools, path, sim::SimulationOptions{.pitch = r.h});
+    return r;
+}
+
+json to_json(const eval::CadMetrics& m) {
+    const eval::CreaseMetrics& c = m.creases;
+    // NaN (no sharp edge on one side) has no JSON number: null.
+    const auto number = [](double x) { return std::isnan(x) ? json(nullptr) : json(x); };
+    return {{"chamfer", m.chamfer},
+            {"hausdorff", m.hausdorff},
+            {"normal_consistency", m.normal_consistency},
+            {"edge_chamfer_distance", number(c.ecd)},
+            {"edge_f1", c.ef1},
+            {"edge_precision", c.precision},
+            {"edge_recall", c.recall},
+            {"crease_length", c.mesh_length},
+            {"true_crease_length", c.true_length},
+            {"stray_crease_length", c.stray_length},
+            {"crease_length_ratio", number(c.length_ratio)}};
+}
+
+/// The "cad" block: the measures of a CAD part against the CSG solid, input and output.
+json cad_block(const ExactReference& reference, const Mesh& input, const Mesh& output,
+               const eval::SurfaceMetrics& surface_in, const eval::SurfaceMetrics& surface_out,
+               eval::CadMetricsOptions cad) {
+    const eval::CurveSamples creases = eval::sample_exact_creases(
+        *reference.csg, reference.grid, {.sharp_angle_deg = cad.sharp_angle_deg});
+    cad.spacing = reference.grid.spec.pitch;
+    const double diagonal = reference.csg->bounds().diagonal().norm();
+    return {
+        {"output", to_json(eval::measure_cad_part(output, surface_out, creases, diagonal, cad))},
+        {"input", to_json(eval::measure_cad_part(input, surface_in, creases, diagonal, cad))},
+        {"diagonal_mm", diagonal},
+        {"sharp_angle_deg", cad.sharp_angle_deg},
+        {"tau_diagonals", cad.tolerance},
+        {"stray_beyond_diagonals", cad.far}};
 }
 
 void run_evaluate(EvaluateArguments args) {
     const StageTimer total;
-    const sim::Job job = sim::read_job(args.job);
-    const double h = job.pitch;
+    const StageTimer sampling;
+    const ExactReference reference = exact_reference(args);
+    const double h = reference.h;
     args.restoration.pitch = args.surface.pitch = h;
 
     const Mesh input = weld(io::read_mesh(args.input));
-    const eval::Oracle oracle = read_oracle(args.oracle, input);
+    const eval::Oracle oracle = eval::read_oracle(args.oracle, input);
     const Restored restored = obtain_restored(args, input, oracle);
     const Mesh& output = restored.mesh;
     eval::check_output_extends_input(input, output);
 
-    const StageTimer sampling;
-    const sim::Simulation fine = simulate_fine(job, args);
-    const eval::SurfaceSamples exact = eval::sample_exact_surface(fine.grid);
+    const eval::SurfaceSamples exact = eval::sample_exact_surface(reference.grid);
     const double sampling_seconds = std::chrono::duration<double>(sampling.elapsed()).count();
 
-    const auto ideal = eval::find_ideal_points(input, oracle, args.ideal);
+    const StageTimer junctions;
+    const auto first_order = eval::find_ideal_points(input, oracle, args.ideal);
+    // A CSG solid's surfaces have no eval::MachinedSolid: its ideal points stay first order.
+    eval::ExactIdealPoints ideal{first_order, {}, {}};
+    eval::RestorationOptions on_junction = args.restoration;
+    if (reference.machined) {
+        args.junctions.solver.pitch = h;
+        args.junctions.smooth_angle_deg = args.ideal.sharp_angle_deg;
+        ideal = eval::find_exact_ideal_points(input, oracle, first_order, *reference.machined,
+                                              args.junctions);
+        on_junction.count_input_vertices = true;
+    }
+    const double junction_seconds = std::chrono::duration<double>(junctions.elapsed()).count();
+
     const eval::RestorationScore score =
-        eval::score_restoration(input, output, ideal, exact, args.restoration);
-    const eval::MissCauses causes =
-        eval::find_miss_causes(input, output, ideal, score.ideal_distance,
-                               args.restoration.tolerance * h, restored.segmentation);
+        eval::score_restoration(input, output, ideal.points, exact, on_junction);
+    const eval::RestorationScore first =
+        eval::score_restoration(input, output, first_order, exact, args.restoration);
+    const double tau = args.restoration.tolerance * h;
 
     json j;
+    j["ideal_points_on"] = reference.machined ? "the exact junction" : "first order (eq. 5.2)";
     j["restoration_rate"] = score.rate;
+    j["restoration_rate_first_order"] = first.rate;
+    // The input's own rate on the exact junction: the points an input vertex already restores.
+    j["restoration_rate_input"] = score.ideal_edges + score.ideal_corners == 0
+                                      ? 1.0
+                                      : double(score.restored_by_input_vertices) /
+                                            double(score.ideal_edges + score.ideal_corners);
     j["restoration_rate_edges"] = score.rate_edges;
     j["restoration_rate_corners"] = score.rate_corners;
     j["restoration_rate_within_reach"] = score.rate_within_reach;
     j["false_insertions"] = score.false_insertions;
     j["max_new_vertex_distance"] = score.max_new_vertex_distance;
-    j["ideal_points"] = {{"edges", score.ideal_edges},
-                         {"corners", score.ideal_corners},
-                         {"restored_edges", score.restored_edges},
-                         {"restored_corners", score.restored_corners},
-                         {"beyond_chord", score.beyond_chord},
-                         {"restored_beyond_chord", score.restored_beyond_chord},
-                         {"new_vertices", score.new_vertices}};
-    j["miss_causes"] = to_json(causes);
+    j["ideal_points"] = to_json(score);
+    j["ideal_points"]["restored_by_input_vertices"] = score.restored_by_input_vertices;
+    j["ideal_points"]["counted_apart"] = counted_apart(ideal);
+    j["miss_causes"] = to_json(eval::find_miss_causes(
+        input, output, ideal.points, score.ideal_distance, tau, restored.segmentation));
+    j["first_order"] = {{"restoration_rate", first.rate},
+                        {"restoration_rate_edges", first.rate_edges},
+                        {"restoration_rate_corners", first.rate_corners},
+                        {"restoration_rate_within_reach", first.rate_within_reach},
+                        {"false_insertions", first.false_insertions},
+                        {"ideal_points", to_json(first)},
+                        {"miss_causes", to_json(eval::find_miss_causes(input, output, first_order,
+                                                                       first.ideal_distance, tau,
+                                                                       restored.segmentation))}};
     j["detection_source"] = restored.detection_source;
     j["detection_precision"] = nullptr;
     j["detection_recall"] = nullptr;
@@ -309,11 +314,16 @@ void run_evaluate(EvaluateArguments args) {
     j["boundary_edges"] = valid_out.boundary_edges;
     j["validity"] = {{"input", to_json(valid_in)}, {"output", to_json(valid_out)}};
 
-    const eval::SurfaceSamples input_samples = eval::sample_mesh(input, fine.grid.spec);
-    const eval::SurfaceSamples output_samples = eval::sample_mesh(output, fine.grid.spec);
-    j["surface"] = {
-        {"output", to_json(eval::compare_surfaces(output, output_samples, exact, args.surface))},
-        {"input", to_json(eval::compare_surfaces(input, input_samples, exact, args.surface))}};
+    const eval::SurfaceSamples input_samples = eval::sample_mesh(input, reference.grid.spec);
+    const eval::SurfaceSamples output_samples = eval::sample_mesh(output, reference.grid.spec);
+    const eval::SurfaceMetrics surface_out =
+        eval::compare_surfaces(output, output_samples, exact, args.surface);
+    const eval::SurfaceMetrics surface_in =
+        eval::compare_surfaces(input, input_samples, exact, args.surface);
+    j["surface"] = {{"output", to_json(surface_out)}, {"input", to_json(surface_in)}};
+    if (reference.csg) {
+        j["cad"] = cad_block(reference, input, output, surface_in, surface_out, args.cad);
+    }
 
     j["settings"] = {{"h_mm", h},
                      {"sharp_angle_deg", args.ideal.sharp_angle_deg},
@@ -326,6 +336,7 @@ void run_evaluate(EvaluateArguments args) {
                      {"edge_f1_threshold_h", args.surface.edge_f1_threshold},
                      {"lengths", "mm"}};
     j["time_seconds"] = {{"exact_sampling", sampling_seconds},
+                         {"exact_junctions", junction_seconds},
                          {"total", std::chrono::duration<double>(total.elapsed()).count()}};
 
     if (!args.json.empty()) {
@@ -334,13 +345,25 @@ void run_evaluate(EvaluateArguments args) {
     }
     if (args.quiet) return;
     std::ostringstream s;
-    s << "restoration rate " << score.rate * 100 << " % (edges " << score.restored_edges << "/"
-      << score.ideal_edges << ", corners " << score.restored_corners << "/" << score.ideal_corners
-      << "), " << score.rate_within_reach * 100 << " % of the "
+    const std::size_t apart = first.ideal_edges + first.ideal_corners - ideal.points.size();
+    s << "restoration rate " << score.rate * 100 << " % on the exact junction (edges "
+      << score.restored_edges << "/" << score.ideal_edges << ", corners " << score.restored_corners
+      << "/" << score.ideal_corners << "; " << apart << " counted apart), "
+      << score.rate_within_reach * 100 << " % of the "
       << score.ideal_edges + score.ideal_corners - score.beyond_chord
-      << " points within reach of an edge split, false insertions " << score.false_insertions
-      << ", flipped " << j["flipped_triangles"] << ", self-intersections "
-      << valid_out.self_intersections << " (input " << valid_in.self_intersections << ")\n";
+      << " points within reach of an edge split; restoration rate first order (eq. 5.2) "
+      << first.rate * 100 << " %; false insertions " << score.false_insertions << ", flipped "
+      << j["flipped_triangles"] << ", self-intersections " << valid_out.self_intersections
+      << " (input " << valid_in.self_intersections << ")\n";
+    if (j.contains("cad")) {
+        const json& in = j["cad"]["input"];
+        const json& out = j["cad"]["output"];
+        s << "CAD part, input -> output: Edge F-score " << in["edge_f1"] << " -> " << out["edge_f1"]
+          << ", Edge Chamfer Distance " << in["edge_chamfer_distance"] << " -> "
+          << out["edge_chamfer_distance"] << ", crease length " << in["crease_length_ratio"]
+          << " -> " << out["crease_length_ratio"] << " of the true, Chamfer " << in["chamfer"]
+          << " -> " << out["chamfer"] << " diagonals\n";
+    }
     std::cerr << s.str();
 }
 
@@ -352,16 +375,22 @@ void add_evaluate_command(CLI::App& app) {
         "evaluate",
         "Score a restored mesh against the simulator's oracle and the exact surface: restoration "
         "rate, detection, surface distances, validity (docs/results.md). Lengths are in mm, "
-        "thresholds in units of the job's pitch h.");
+        "thresholds in units of the job's pitch h. With --solid, also the measures of a CAD "
+        "part in units of its bounding-box diagonal (\"cad\" in the JSON).");
     command->add_option("--input", args->input, "the simulated mesh (resharp simulate -o)")
         ->required();
     command->add_option("--oracle", args->oracle, "its oracle PLY (resharp simulate --oracle)")
         ->required();
+    CLI::Option* job = command->add_option(
+        "--job", args->job,
+        "the job file the mesh was simulated from; its surface is sampled again on a finer grid");
     command
-        ->add_option("--job", args->job,
-                     "the job file the mesh was simulated from; its "
-                     "surface is sampled again on a finer grid")
-        ->required();
+        ->add_option("--solid", args->solid,
+                     "the CSG solid file the mesh was sampled from (resharp simulate --solid), "
+                     "instead of --job; its ideal points are first order (eq. 5.2)")
+        ->excludes(job);
+    add_grid_options(*command, args->grid,
+                     "the job's; 100 cells for a solid; give what simulate was given");
     command->add_option("--output", args->output,
                         "the restored mesh (with --restore: where to write it, optional)");
     command->add_option("--segments", args->segments,
@@ -418,8 +447,16 @@ void add_evaluate_command(CLI::App& app) {
         ->add_option("--edge-f1-threshold", args->surface.edge_f1_threshold,
                      "Edge F-score distance threshold in h (NDC: 0.32 h)")
         ->capture_default_str();
+    command
+        ->add_option("--edge-tolerance", args->cad.tolerance,
+                     "with --solid: tau of the Edge F-score, in bounding-box diagonals")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     command->add_flag("-q,--quiet", args->quiet, "print no summary");
     command->callback([args] {
+        if (args->job.empty() == args->solid.empty()) {
+            throw CLI::ValidationError("--job", "give exactly one of --job and --solid");
+        }
         if (!args->restore && args->output.empty()) {
             throw CLI::ValidationError("--output", "needed unless --restore is given");
         }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "resharp/core/assert.h"
 #include "resharp/core/errors.h"
 
 namespace resharp {
@@ -118,6 +119,25 @@ void link_edges_of(std::span<EdgeEntry> filed, Index low, std::vector<Index>& tw
 
 }  // namespace
 
+namespace {
+
+/// Invariant of the adjacency: twins are mutual, run the other way along the same edge, and
+/// exist exactly on manifold edges.
+bool has_symmetric_twins(const Mesh& mesh, const Connectivity& c) {
+    for (Index h = 0; h < c.twin.size(); ++h) {
+        const Index t = c.twin[h];
+        if ((t != kNoIndex) != (c.edge_kind[h] == EdgeKind::Manifold)) return false;
+        if (t == kNoIndex) continue;
+        if (c.twin[t] != h || tail_vertex(mesh, t) != head_vertex(mesh, h) ||
+            head_vertex(mesh, t) != tail_vertex(mesh, h)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
 Connectivity build_connectivity(const Mesh& mesh) {
     if (mesh.face_count() >= kForwardBit / 3) {
         throw InvalidInput("meshes of more than " + std::to_string(kForwardBit / 3 - 1) +
@@ -136,6 +156,7 @@ Connectivity build_connectivity(const Mesh& mesh) {
                               link_edges_of({filed.data(), count}, v, c.twin, c.edge_kind);
                           }
                       });
+    RESHARP_EXPENSIVE_ASSERT(has_symmetric_twins(mesh, c));
     return c;
 }
 

@@ -31,6 +31,8 @@ bool is_nonmanifold_vertex(const Mesh& mesh, const Connectivity& c, Index v) {
     const Index first = 3 * ring[0] + (t[0] == v ? 0 : t[1] == v ? 1 : 2);  // leaves v
     std::size_t reached = 1;
     Index h = first;
+    // Bound: each turn reaches one more face, and more turns than the ring has faces end both
+    // loops.
     for (;;) {  // forwards: across the edge entering v
         const Index twin = c.twin[prev_halfedge(h)];
         if (twin == kNoIndex) break;

@@ -67,7 +67,7 @@ private:
         shift_ = 64 - std::countr_zero(size);
         for (std::size_t i = 0; i < positions.size(); ++i) {
             std::size_t slot = first_slot(key_of(positions[i]));
-            while (slots_[slot] != kNoIndex) slot = (slot + 1) & mask_;
+            while (slots_[slot] != kNoIndex) slot = (slot + 1) & mask_;  // at most half full
             slots_[slot] = static_cast<Index>(i);
         }
     }

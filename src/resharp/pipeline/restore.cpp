@@ -120,8 +120,8 @@ SplitMesh unchanged(const Mesh& mesh) {
 
 /// Invariants of a split the harm check accepted: the input vertices first and unchanged, every
 /// source face valid and in order, pieces only on faces with a crossing edge or a corner role.
-bool is_sound_split(const InputSurface& input, const BandClassification& bands,
-                    const SplitMesh& split) {
+[[maybe_unused]] bool is_sound_split(const InputSurface& input, const BandClassification& bands,
+                                     const SplitMesh& split) {
     const Mesh& in = input.mesh;
     if (split.mesh.vertex_count() < in.vertex_count()) return false;
     if (!std::equal(in.positions.begin(), in.positions.end(), split.mesh.positions.begin()))
@@ -136,6 +136,17 @@ bool is_sound_split(const InputSurface& input, const BandClassification& bands,
         if (split.mesh.triangles[o] != in.triangles[f] && !may_be_split) return false;
     }
     return true;
+}
+
+/// Invariant of the split: it adds no boundary, non-manifold or inconsistent edge (every edge
+/// point splits both faces of its edge; no point lies on a defective edge).
+[[maybe_unused]] bool adds_no_open_or_nonmanifold_edge(const InputSurface& input,
+                                                       const SplitMesh& split) {
+    const MeshDiagnostics before = diagnose(input.mesh, input.connectivity);
+    const MeshDiagnostics after = diagnose(split.mesh, build_connectivity(split.mesh));
+    return after.boundary_edges <= before.boundary_edges &&
+           after.nonmanifold_edges <= before.nonmanifold_edges &&
+           after.inconsistent_edges <= before.inconsistent_edges;
 }
 
 }  // namespace
@@ -193,8 +204,10 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
         r.guard.refused_by_quality += guarded.report.refused_by_quality;
         r.guard.refused_by_guard += guarded.report.refused_by_guard;
         r.guard.repairs += guarded.report.repairs;
-        clock.run(Stage::Split,
-                  [&] { r.output = split_faces(input.mesh, r.points.points, guarded.accepted); });
+        clock.run(Stage::Split, [&] {
+            r.output = {};  // the last round's split goes first: one alive at a time
+            r.output = split_faces(input.mesh, r.points.points, guarded.accepted);
+        });
         HarmReport harm;
         clock.run(Stage::HarmCheck, [&] {
             // After the first round only the faces near those whose pieces changed are judged
@@ -208,9 +221,10 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
         if (round == 0) r.first_harm = harm;
         if (harm.is_harmless()) {
             RESHARP_EXPENSIVE_ASSERT(is_sound_split(input, bands, r.output));
+            RESHARP_EXPENSIVE_ASSERT(adds_no_open_or_nonmanifold_edge(input, r.output));
             return r;
         }
-        const std::size_t before = r.undone_points;
+        [[maybe_unused]] const std::size_t before = r.undone_points;
         withdraw_points_of(harm.harmful_faces, checked, withdrawn, r.undone_points);
         RESHARP_ASSERT(r.undone_points > before);
     }

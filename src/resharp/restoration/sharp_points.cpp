@@ -1,5 +1,6 @@
 #include "resharp/restoration/sharp_points.h"
 
+#include "resharp/core/assert.h"
 #include "resharp/core/errors.h"
 #include "resharp/mesh/geometry.h"
 
@@ -119,6 +120,30 @@ void place_corner_points(const Mesh& mesh, const Connectivity& c,
 
 }  // namespace
 
+namespace {
+
+/// Invariant of the placement: edge points only on crossing edges, the same point on both
+/// half-edges; corner points only in corner triangles; every slot names an existing point.
+bool slots_follow_bands(const Connectivity& c, const BandClassification& bands,
+                        const SharpPoints& p) {
+    for (Index h = 0; h < p.slots.edge_point.size(); ++h) {
+        const Index id = p.slots.edge_point[h];
+        if (id == kNoIndex) continue;
+        if (!bands.is_crossing[h] || c.twin[h] == kNoIndex || p.slots.edge_point[c.twin[h]] != id ||
+            id >= p.points.size()) {
+            return false;
+        }
+    }
+    for (Index f = 0; f < p.slots.corner_point.size(); ++f) {
+        const Index id = p.slots.corner_point[f];
+        if (id != kNoIndex && (bands.face_role[f] != BandRole::Corner || id >= p.points.size()))
+            return false;
+    }
+    return true;
+}
+
+}  // namespace
+
 SharpPoints place_sharp_points(const Mesh& mesh, const Connectivity& connectivity,
                                const std::vector<Vec3>& face_normals,
                                const BandClassification& bands,
@@ -133,6 +158,7 @@ SharpPoints place_sharp_points(const Mesh& mesh, const Connectivity& connectivit
     place_edge_points(mesh, connectivity, bands, feature_normals, out);
     place_corner_points(mesh, connectivity, face_normals, bands, feature_normals,
                         options.spike_angle_deg, out);
+    RESHARP_EXPENSIVE_ASSERT(slots_follow_bands(connectivity, bands, out));
     return out;
 }
 

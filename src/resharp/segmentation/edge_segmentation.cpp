@@ -88,7 +88,7 @@ std::vector<Index> label_edge_pieces(const Mesh& mesh, const Connectivity& c,
         if (!is_edge[seed] || piece[seed] != kNoIndex) continue;
         piece[seed] = next;
         stack.push_back(seed);
-        while (!stack.empty()) {
+        while (!stack.empty()) {  // bound: a vertex is pushed once, when it gets its piece
             const Index v = stack.back();
             stack.pop_back();
             for_each_ring_vertex(mesh, c, v, [&](Index j) {
@@ -136,6 +136,7 @@ std::size_t bridge_broken_edges(const Mesh& mesh, const Connectivity& c, int max
         touched.assign(1, end);
         int walked = 0;
         Index reached = kNoIndex;
+        // Bound: at most P (max_walk) vertices walked from each end, each visiting its ring.
         while (!queue.empty() && reached == kNoIndex && walked <= max_walk) {
             const Index v = queue.front();
             queue.pop_front();

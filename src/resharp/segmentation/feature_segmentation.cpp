@@ -43,6 +43,7 @@ std::vector<Index> grow_regions(const Connectivity& c, const std::vector<Vec3>& 
         if (region[seed] != kNoIndex) continue;
         region[seed] = next;
         queue.assign(1, seed);
+        // Bound: a face joins a region, and the queue, once.
         for (std::size_t head = 0; head < queue.size(); ++head) {
             const Index u = queue[head];
             for (Index k = 0; k < 3; ++k) {
@@ -190,6 +191,9 @@ Index absorbing_patch(const std::vector<Contact>& contacts, double min_mean_cosi
 /// tiny piece of a curved wall would join the flat face above it through a corner of the band,
 /// and merging would then pour the whole wall into that face. Repeated so that clusters of tiny
 /// patches drain into their feature neighbour from the outside in.
+/// Passes of absorb_tiny at most: clusters of tiny patches on real parts drain in a few.
+constexpr int kMaxAbsorbPasses = 64;
+
 std::size_t absorb_tiny(const Connectivity& c, const std::vector<Vec3>& normals,
                         double max_angle_deg, std::vector<Index>& region,
                         std::vector<PatchRole>& role) {
@@ -200,7 +204,10 @@ std::size_t absorb_tiny(const Connectivity& c, const std::vector<Vec3>& normals,
     const double min_mean_cosine = std::cos(max_angle_deg * kDegree);
     std::size_t absorbed = 0;
     bool changed = true;
-    while (changed) {
+    // Bound: each pass that changes anything empties at least one tiny patch for good, and at
+    // most kMaxAbsorbPasses passes run, each linear in the tiny faces; patches deeper inside a
+    // cluster than that stay bands (below), as patches with no feature neighbour do.
+    for (int pass = 0; changed && pass < kMaxAbsorbPasses; ++pass) {
         changed = false;
         const auto contacts = tiny_contacts(c, normals, region, role, tiny_faces);
         std::vector<Index> target(role.size(), kNoIndex);

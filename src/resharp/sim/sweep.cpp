@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "resharp/core/errors.h"
+#include "resharp/sim/cone_ramp.h"
 
 namespace resharp::sim {
 namespace {
@@ -248,6 +249,7 @@ SweptVolume::SweptVolume(const Tool& tool, const ToolMotion& motion, std::size_t
     } else {
         method_ = tool.shape == ToolShape::FlatEnd   ? Method::FlatRamp
                   : tool.shape == ToolShape::BallEnd ? Method::BallRamp
+                  : tool.shape == ToolShape::Cone    ? Method::ConeRamp
                                                      : Method::SampledRamp;
     }
     const Vec3 lo = motion.start.cwiseMin(motion.end), hi = motion.start.cwiseMax(motion.end);
@@ -255,9 +257,9 @@ SweptVolume::SweptVolume(const Tool& tool, const ToolMotion& motion, std::size_t
                    Vec3(hi.x() + rim, hi.y() + rim, hi.z() + tool.flute_length));
 }
 
-Eigen::Vector2d SweptVolume::nearest_on_path(const Eigen::Vector2d& p) const {
-    if (motion_.kind == ToolMotion::Kind::Arc) return arc_shape(motion_).nearest(p);
-    return nearest_on_segment<2>(p, motion_.start.head<2>(), motion_.end.head<2>());
+Eigen::Vector2d nearest_on_path(const ToolMotion& motion, const Eigen::Vector2d& p) {
+    if (motion.kind == ToolMotion::Kind::Arc) return arc_shape(motion).nearest(p);
+    return nearest_on_segment<2>(p, motion.start.head<2>(), motion.end.head<2>());
 }
 
 Crossing SweptVolume::crossing(const Vec3& p, const Eigen::Vector2d& nearest,
@@ -270,6 +272,10 @@ Crossing SweptVolume::crossing(const Vec3& p, const Eigen::Vector2d& nearest,
 void SweptVolume::intersect(const Ray& ray, std::vector<Interval>& out) const {
     if (method_ == Method::SampledRamp) {
         intersect_static_copies(ray, out);
+    } else if (method_ == Method::ConeRamp) {
+        if (const auto cut = cut_cone_ramp(tool_, motion_.start, motion_.end, ray, move_)) {
+            out.push_back(*cut);
+        }
     } else if (ray.axis == 2) {
         intersect_vertical(ray, out);
     } else {
@@ -283,7 +289,7 @@ void SweptVolume::intersect_vertical(const Ray& ray, std::vector<Interval>& out)
     const Crossing top_plane_at = {0.0, Vec3::UnitZ(), tool_surface_id(move_, ToolPart::Top)};
     if (method_ == Method::Horizontal || method_ == Method::Plunge) {
         // The lowest the tool reaches on this line is where the path comes nearest.
-        const Vec2 q = nearest_on_path(xy);
+        const Vec2 q = nearest_on_path(motion_, xy);
         const double r = (xy - q).norm();
         const Vec2 g = unit_or_x(xy - q);
         if (r > tool_.radius || (r == tool_.radius && !boundary_is_inside(embed(g)))) return;
@@ -347,8 +353,8 @@ void SweptVolume::intersect_horizontal(const Ray& ray, std::vector<Interval>& ou
     const double flute = tool_.flute_length;
     const auto band_crossings = [&](const Range& r, const ProfilePoint& profile) {
         const Vec3 p0 = ray.point(r.t0), p1 = ray.point(r.t1);
-        return Interval{crossing(p0, nearest_on_path(p0.head<2>()), profile, r.t0),
-                        crossing(p1, nearest_on_path(p1.head<2>()), profile, r.t1)};
+        return Interval{crossing(p0, nearest_on_path(motion_, p0.head<2>()), profile, r.t0),
+                        crossing(p1, nearest_on_path(motion_, p1.head<2>()), profile, r.t1)};
     };
     if (method_ == Method::Horizontal) {
         const double height = z - motion_.start.z();

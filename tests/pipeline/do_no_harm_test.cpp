@@ -1,0 +1,212 @@
+// restore()'s promise on meshes it was not made for: it always finishes within its stated
+// bounds, and what it gives back is never worse than what it got (docs/method.md, "Do no harm").
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "resharp/core/errors.h"
+#include "resharp/io/mesh_io.h"
+#include "resharp/mesh/diagnostics.h"
+#include "resharp/mesh/geometry.h"
+#include "resharp/pipeline/restore.h"
+#include "support/grid_shapes.h"
+#include "support/invariants.h"
+
+namespace resharp {
+namespace {
+
+/// Output faces that replace an input face and turn more than 90 degrees against every input
+/// face nearest one of their vertices or their centroid, searched by brute force over the whole
+/// input: a check written apart from the harm check's own.
+std::size_t turned_against_nearest(const Mesh& input, const RestoreResult& r) {
+    const std::vector<Vec3> in = face_normals(input);
+    std::vector<Vec3> centre(input.face_count());
+    std::vector<double> radius(input.face_count());
+    for (std::size_t g = 0; g < input.face_count(); ++g) {
+        const Triangle& t = input.triangles[g];
+        centre[g] = (input.positions[t[0]] + input.positions[t[1]] + input.positions[t[2]]) / 3.0;
+        for (Index v : t) radius[g] = std::max(radius[g], (input.positions[v] - centre[g]).norm());
+    }
+    auto turned_at = [&](const Vec3& q, const Vec3& n) {
+        double nearest = std::numeric_limits<double>::infinity();
+        bool agrees = false;
+        for (std::size_t g = 0; g < input.face_count(); ++g) {
+            const double reach = std::max(0.0, (q - centre[g]).norm() - radius[g]);
+            if (reach * reach > 1.01 * nearest + 1e-12) continue;  // cannot be among the nearest
+            const Triangle& t = input.triangles[g];
+            const double d = squared_distance_to_triangle(
+                q, input.positions[t[0]], input.positions[t[1]], input.positions[t[2]]);
+            // Ties within rounding: a vertex lies on every face around it, at a distance that
+            // rounding may make 1e-17 instead of 0.
+            constexpr double kTie = 1e-18;  // mm^2
+            if (d < nearest - kTie) agrees = false;
+            if (d <= nearest + kTie) agrees = agrees || in[g].dot(n) >= -1e-6;
+            nearest = std::min(nearest, d);
+        }
+        return !agrees;
+    };
+    std::size_t turned = 0;
+    for (std::size_t o = 0; o < r.mesh.face_count(); ++o) {
+        const Triangle& t = r.mesh.triangles[o];
+        if (t == input.triangles[r.source_face[o]]) continue;
+        const auto& x = r.mesh.positions;
+        const Vec3 n = triangle_normal(x[t[0]], x[t[1]], x[t[2]]);
+        bool is_turned = n.isZero(0.0) || turned_at((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0, n);
+        for (Index v : t) is_turned = is_turned || turned_at(x[v], n);
+        turned += is_turned;
+    }
+    return turned;
+}
+
+/// What must hold of any restoration: input vertices kept, no defect added, nothing turned
+/// against the input, no new self-intersection, the loop within its bound.
+void expect_no_harm(const Mesh& input, const RestoreResult& r, const RestoreOptions& options) {
+    test::expect_input_vertices_preserved(input, r.mesh);
+    const MeshDiagnostics before = diagnose(input, build_connectivity(input));
+    const MeshDiagnostics after = diagnose(r.mesh, build_connectivity(r.mesh));
+    EXPECT_LE(after.boundary_edges, before.boundary_edges);
+    EXPECT_LE(after.nonmanifold_edges, before.nonmanifold_edges);
+    EXPECT_LE(after.inconsistent_edges, before.inconsistent_edges);
+    EXPECT_EQ(turned_against_nearest(input, r), 0u);
+    test::expect_no_new_self_intersections(input, r.mesh);
+    EXPECT_LE(r.report.harm_rounds, static_cast<std::size_t>(options.max_harm_rounds));
+}
+
+/// The drilled plate damaged the ways other meshers and careless exports damage meshes.
+Mesh perturbed(const Mesh& mesh, double pitch, int kind, std::mt19937& random) {
+    Mesh out = mesh;
+    std::uniform_int_distribution<std::size_t> face(0, mesh.face_count() - 1);
+    switch (kind) {
+        case 0: {  // every vertex off the surface by up to a tenth of a cell (near-surface meshers)
+            std::uniform_real_distribution<double> jitter(-0.1 * pitch, 0.1 * pitch);
+            for (Vec3& p : out.positions) p += Vec3(jitter(random), jitter(random), jitter(random));
+            break;
+        }
+        case 1:  // a few faces dropped: holes
+            for (int i = 0; i < 5; ++i) out.triangles.erase(out.triangles.begin() + face(random));
+            break;
+        case 2:  // a few faces written twice, one of them turned over
+            for (int i = 0; i < 5; ++i) out.triangles.push_back(out.triangles[face(random)]);
+            out.triangles.push_back(out.triangles[face(random)]);
+            std::swap(out.triangles.back()[1], out.triangles.back()[2]);
+            break;
+        default:  // a few faces turned over in place
+            for (int i = 0; i < 5; ++i) {
+                Triangle& t = out.triangles[face(random)];
+                std::swap(t[1], t[2]);
+            }
+    }
+    return out;
+}
+
+TEST(DoNoHarm, PerturbedPlatesFinishAndComeOutNoWorse) {
+    const test::SampledShape shape = test::sampled_drilled_plate();
+    std::mt19937 random(11);
+    const RestoreOptions options;
+    for (int kind = 0; kind < 4; ++kind) {
+        SCOPED_TRACE("perturbation " + std::to_string(kind));
+        const Mesh input = perturbed(shape.mesh, shape.pitch, kind, random);
+        const RestoreResult r = restore(input, options);
+        EXPECT_GT(r.report.edge_points_inserted, 0u);  // still restores the rest
+        expect_no_harm(input, r, options);
+    }
+}
+
+TEST(DoNoHarm, EveryMeshersPlateComesOutNoWorse) {
+    const RestoreOptions options;
+    for (sim::Mesher mesher :
+         {sim::Mesher::Bisection, sim::Mesher::Midpoint, sim::Mesher::SurfaceNets}) {
+        SCOPED_TRACE(sim::to_string(mesher));
+        const test::SampledShape shape = test::sampled_drilled_plate(0.5, mesher);
+        const RestoreResult r = restore(shape.mesh, options);
+        expect_no_harm(shape.mesh, r, options);
+    }
+}
+
+TEST(DoNoHarm, TheMeshThatHungRestoresWithinItsBounds) {
+    const Mesh input = weld(io::read_mesh(RESHARP_TEST_DATA_DIR "/relief_hang.stl"));
+    ASSERT_EQ(input.face_count(), 113174u);
+    const RestoreOptions options;
+    const RestoreResult r = restore(input, options);
+    EXPECT_EQ(r.report.duplicate_faces_removed, 1798u);
+    EXPECT_GT(r.report.edge_points_inserted, 1000u);
+    EXPECT_LE(r.report.harm_rounds, static_cast<std::size_t>(options.max_harm_rounds));
+    // The guard's bound: at most three repairs per slot that held a point at the start (each
+    // crossing edge fills two slots, each corner one).
+    EXPECT_LE(r.report.guard_repairs,
+              3 * r.report.harm_rounds * (2 * r.report.crossing_edges + r.report.corner_triangles));
+    test::expect_input_vertices_preserved(input, r.mesh);
+    test::expect_closed_manifold(r.mesh);  // the input less its duplicates is closed
+}
+
+TEST(DoNoHarm, EveryTriangleTwiceRestoresLikeTheCleanMesh) {
+    const test::SampledShape shape = test::sampled_drilled_plate();
+    Mesh doubled = shape.mesh;
+    for (const Triangle& t : shape.mesh.triangles) doubled.triangles.push_back(t);
+    const RestoreResult clean = restore(shape.mesh);
+    const RestoreResult twice = restore(doubled);
+    EXPECT_EQ(twice.report.duplicate_faces_removed, shape.mesh.face_count());
+    EXPECT_EQ(twice.mesh.positions, clean.mesh.positions);
+    EXPECT_EQ(twice.mesh.triangles, clean.mesh.triangles);
+    EXPECT_EQ(twice.source_face, clean.source_face);  // the first copies are the ones kept
+    // Kept on request: the duplicates then make every edge non-manifold and nothing is restored.
+    RestoreOptions keep;
+    keep.repair.remove_duplicate_faces = false;
+    EXPECT_EQ(restore(doubled, keep).report.duplicate_faces_removed, 0u);
+}
+
+TEST(DoNoHarm, OppositeFacesAreKeptAndCounted) {
+    const test::SampledShape shape = test::sampled_box();
+    Mesh sheet = shape.mesh;
+    const Triangle t = shape.mesh.triangles[0];
+    sheet.triangles.push_back({t[0], t[2], t[1]});
+    const RestoreResult r = restore(sheet);
+    EXPECT_EQ(r.report.duplicate_faces_removed, 0u);
+    EXPECT_EQ(r.report.opposite_face_pairs, 1u);
+    EXPECT_EQ(r.source_face.back(), sheet.face_count() - 1);  // still there
+}
+
+TEST(DoNoHarm, ADeadlineOrACancellationGivesTheInputBack) {
+    const test::SampledShape shape = test::sampled_drilled_plate();
+    RestoreOptions late;
+    late.stop.deadline = std::chrono::steady_clock::now();
+    const RestoreResult r = restore(shape.mesh, late);
+    EXPECT_TRUE(r.report.output_unchanged);
+    EXPECT_EQ(r.report.unchanged_reason, "cancelled");
+    EXPECT_EQ(r.mesh.triangles, shape.mesh.triangles);
+    EXPECT_EQ(r.mesh.positions, shape.mesh.positions);
+    // A callback that says stop at its fourth question: the pipeline is inside, not done.
+    int asked = 0;
+    RestoreOptions cancel;
+    cancel.stop.cancelled = [&] { return ++asked >= 4; };
+    const RestoreResult c = restore(shape.mesh, cancel);
+    EXPECT_EQ(asked, 4);
+    EXPECT_TRUE(c.report.output_unchanged);
+    EXPECT_EQ(c.mesh.triangles, shape.mesh.triangles);
+    // Asked but never firing: the same output as without it.
+    RestoreOptions patient;
+    patient.stop.cancelled = [] { return false; };
+    EXPECT_EQ(restore(shape.mesh, patient).mesh.triangles, restore(shape.mesh).mesh.triangles);
+}
+
+TEST(DoNoHarm, HarmThatOutlastsTheRoundsGivesTheInputBack) {
+    // With one round allowed, any harm the first round finds cannot be undone in time: the
+    // jittered plate (which needs a second round) comes back unchanged.
+    const test::SampledShape shape = test::sampled_drilled_plate();
+    std::mt19937 random(3);
+    const Mesh input = perturbed(shape.mesh, shape.pitch, 0, random);
+    const RestoreResult full = restore(input);
+    ASSERT_GT(full.report.harm_rounds, 1u) << "the case no longer needs a second round";
+    RestoreOptions one;
+    one.max_harm_rounds = 1;
+    const RestoreResult r = restore(input, one);
+    EXPECT_TRUE(r.report.output_unchanged);
+    EXPECT_EQ(r.report.unchanged_reason, "harm rounds exhausted");
+    EXPECT_EQ(r.mesh.triangles, input.triangles);
+    EXPECT_THROW(restore(input, {.max_harm_rounds = 0}), InvalidInput);
+}
+
+}  // namespace
+}  // namespace resharp
