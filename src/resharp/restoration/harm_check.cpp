@@ -123,16 +123,17 @@ class SplitFaces {
 public:
     /// Takes the split (source faces ascending) and the input's face count.
     SplitFaces(const SplitMesh& output, std::size_t input_faces) : number_(input_faces, kNoIndex) {
-        const auto& source = output.source_face;
+        const Index* source = output.source_face.data();
+        const Index count = static_cast<Index>(output.source_face.size());
         face_.reserve(output.split_faces);
         first_output_.reserve(output.split_faces);
         first_piece_.reserve(output.split_faces + 1);
         // A split face's pieces are the runs of one source face; a run starts where the next
         // output face has the same source.
-        for (Index o = 0; o + 1 < source.size(); ++o) {
+        for (Index o = 0; o + 1 < count; ++o) {
             if (source[o + 1] != source[o]) continue;
             Index end = o + 2;
-            while (end < source.size() && source[end] == source[o]) ++end;
+            while (end < count && source[end] == source[o]) ++end;
             number_[source[o]] = static_cast<Index>(face_.size());
             face_.push_back(source[o]);
             first_output_.push_back(o);
