@@ -38,6 +38,16 @@ struct HarmReport {
 /// whole are the input's own and are not judged). A fault between a piece and another split
 /// face's piece blames both faces.
 ///
+/// The crossing check (c) tests a piece against the output faces of the input faces within two
+/// rings of its own whose boxes meet the pieces' box, pairs sharing an edge left to the fold
+/// check (b). Two kinds of pair are settled without the intersection test (triangles_meet()):
+/// - pairs sharing only a vertex around which the output is a simple fan (simple_fan.h): they
+///   cannot cross, by the fan's exact sectors rather than the test's tolerance (a pair of such
+///   faces closer than the tolerance but apart is accepted where the test would have refused);
+/// - pairs sharing no vertex that a plane through an edge of one, holding its normal, parts by
+///   more than the tolerance (the separating axes the test itself would reach last).
+/// On the benchmark parts this changes no verdict.
+///
 /// A later round may pass `changed` (#F): the input faces whose pieces differ from those of an
 /// earlier split this check judged, every face it found harmful among them. Then only the split
 /// faces within two rings of a changed face are judged: a face's verdict depends on nothing but
