@@ -215,6 +215,9 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
             const std::vector<std::uint8_t> changed =
                 round == 0 ? std::vector<std::uint8_t>{} : changed_faces(checked, guarded.accepted);
             harm = check_harm(input, r.output, options.harm, changed);
+            RESHARP_EXPENSIVE_ASSERT(changed.empty() ||
+                                     harm.harmful_faces ==
+                                         check_harm(input, r.output, options.harm).harmful_faces);
         });
         checked = std::move(guarded.accepted);
         ++r.rounds;
