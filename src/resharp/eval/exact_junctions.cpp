@@ -53,7 +53,9 @@ public:
         for (int round = 0; round <= options_.max_continuations; ++round) {
             const std::optional<Vec3> x =
                 p.kind == IdealKind::Edge ? edge(p, surfaces) : corner(p, surfaces);
-            if (!x) return {};
+            // After a hand-over, no junction with the continuing surface means the vertices'
+            // own surfaces do not meet on the solid.
+            if (!x) return {round == 0 ? JunctionStatus::Unsolved : JunctionStatus::NotBounding};
             if (const std::optional<Outcome> done = check_sides(p, *x, surfaces)) return *done;
         }
         return {JunctionStatus::NotBounding};

@@ -24,7 +24,8 @@ enum class JunctionStatus : std::uint8_t {
     SampledSurface,  ///< a surface is a bull-nose ramp's, which the simulator samples: apart
     NotBounding,     ///< the surfaces meet, but not both bound the solid there (nor do
                      ///< surfaces continuing them smoothly): apart
-    Unsolved,        ///< no junction within reach of the edge, or a vertex off its surface
+    Unsolved,        ///< no junction of the vertices' surfaces within reach of the edge,
+                     ///< or a vertex off its surface (after a hand-over: NotBounding)
 };
 inline constexpr std::size_t kJunctionStatusCount = 4;
 
