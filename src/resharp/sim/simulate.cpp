@@ -66,8 +66,9 @@ std::vector<SweptVolume> swept_volumes(const Box3& stock, const std::map<int, To
         if (move.tool == 0) continue;
         const auto tool = tools.find(move.tool);
         if (tool == tools.end()) {
-            throw InvalidInput("G-code line " + std::to_string(move.line) + " uses tool T" +
-                               std::to_string(move.tool) + ", which the tool table lacks");
+            throw InvalidInput(path.source + ": line " + std::to_string(move.line) +
+                               ": uses tool T" + std::to_string(move.tool) +
+                               ", which the tool table lacks");
         }
         bool cuts = false;
         for (const ToolMotion& motion : motions_of(move, options.helix_tolerance)) {

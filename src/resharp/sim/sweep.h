@@ -7,7 +7,8 @@
 ///   tool's disk at that height swept along the path (a stadium or an annular sector);
 /// - plunges (vertical lines): exact for every tool;
 /// - ramps (lines moving in both XY and Z): exact for flat end (including the surface the
-///   bottom rim sweeps) and ball end (a capsule around the centre path plus the shank);
+///   bottom rim sweeps), ball end (a capsule around the centre path plus the shank) and conical
+///   mills (cone_ramp.h);
 ///   bull-nose is the union of copies of the tool every `bullnose_step` along the ramp: the
 ///   smooth underside is off by about step² / (8 rc), the sharp rim at the flute top (which
 ///   should stay above the stock) by up to a step;
@@ -58,6 +59,7 @@ public:
         Plunge,      ///< Z only: the tool at the lower end, its top at the upper end
         FlatRamp,    ///< flat end, XY and Z together
         BallRamp,    ///< ball end, XY and Z together
+        ConeRamp,    ///< conical mill, XY and Z together (cone_ramp.h)
         SampledRamp  ///< bull-nose, XY and Z together: copies every bullnose_step (not exact)
     };
     Method method() const { return method_; }
