@@ -55,6 +55,9 @@ struct ExactJunctionOptions {
     /// job and the oracle disagree there). Binary STL rounds positions to float, about 1e-5 h on
     /// a part 100 mm long.
     double on_surface_tolerance = 1e-3;
+    /// In h: the same for the surface points of an off-surface mesher, which lie on the tangent
+    /// plane at a crossing near the vertex (up to 0.3 h off near edges, docs/oracle.md).
+    double off_surface_tolerance = 0.5;
 };
 
 struct ExactIdealPoints {
