@@ -1,5 +1,5 @@
 #pragma once
-/// Ground truth from the simulator's oracle (design.md §5): where the sharp edges and corners
+/// Ground truth from the simulator's oracle (docs/design.md §5): where the sharp edges and corners
 /// are, and how many of them a restored mesh put back.
 
 #include <cstdint>

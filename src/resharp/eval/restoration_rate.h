@@ -1,5 +1,5 @@
 #pragma once
-/// How many ideal sharp points a restored mesh put back (design.md §5, the paper's §6 rate).
+/// How many ideal sharp points a restored mesh put back (docs/design.md §5, the paper's §6 rate).
 
 #include <cstddef>
 #include <span>

@@ -1,5 +1,5 @@
 #pragma once
-/// Milling: a box stock minus the volume every move of a program sweeps (design.md §4).
+/// Milling: a box stock minus the volume every move of a program sweeps (docs/design.md §4).
 
 #include <cstddef>
 #include <functional>
