@@ -37,6 +37,24 @@ TEST(EvaluationFiles, OracleIsMatchedToTheInputByPosition) {
     EXPECT_EQ(oracle.normals[3], Vec3(0, 0, 1));  // normalised
 }
 
+// An off-surface mesher's oracle also gives each vertex its surface point (sx, sy, sz).
+TEST(EvaluationFiles, OracleSurfacePointsAreMatchedToo) {
+    const std::vector<Vec3> normals(4, Vec3(0, 0, 1));
+    const std::vector<std::int32_t> surfaces(4, 5);
+    const std::vector<Vec3> points{Vec3(1, 1, 0.1), Vec3(0, 1, 0.1), Vec3(1, 0, 0.1),
+                                   Vec3(0, 0, 0.1)};
+    const io::PlyMesh ply = round_trip(
+        reversed_input(),
+        {.vertex_normals = normals, .vertex_surfaces = surfaces, .vertex_surface_points = points});
+    const Oracle oracle = match_oracle(ply, "test.ply", kInput);
+    ASSERT_EQ(oracle.surface_points.size(), 4u);
+    EXPECT_EQ(oracle.surface_points[0], Vec3(0, 0, 0.1));
+    EXPECT_EQ(oracle.surface_points[3], Vec3(1, 1, 0.1));
+    const io::PlyMesh plain =
+        round_trip(kInput, {.vertex_normals = normals, .vertex_surfaces = surfaces});
+    EXPECT_TRUE(match_oracle(plain, "test.ply", kInput).surface_points.empty());
+}
+
 TEST(EvaluationFiles, OracleOfAnotherMeshIsRefused) {
     Mesh moved = reversed_input();
     moved.positions[0].z() = 0.5;  // input vertex 3 is not in this oracle

@@ -112,6 +112,26 @@ TEST(ExactJunctions, TwoBallPassesMeetOnTheirRidge) {
     EXPECT_LT(on_ridge(strict), on_ridge(ideal));
 }
 
+// A 90 degree V-bit's groove along x at y = 10.13, tip at z = 8.27 (move 2): its flanks meet the
+// top (z = 10) on the lines y = 10.13 +- 1.73.
+TEST(ExactJunctions, VGrooveFlanksMeetTheTopOnTwoLines) {
+    const test::MilledPart part(kStock, {{1, Tool::make_cone(8, 90, 0, 20)}},
+                                "T1 M6\nG0 X-6 Y10.13 Z30\nG1 Z8.27\nX36\nG0 Z30\nM30\n");
+    const ExactIdealPoints ideal = exact_points(part);
+    std::size_t groove = 0;
+    for (const IdealPoint& p : ideal.points) {
+        if (!touches_move(part, p, 2) || p.kind != IdealKind::Edge) continue;
+        const std::int32_t a = part.oracle.surfaces[p.vertices[0]];
+        const std::int32_t b = part.oracle.surfaces[p.vertices[1]];
+        if (a != 5 && b != 5) continue;  // the groove's ends at the stock's x faces
+        ++groove;
+        EXPECT_NEAR(std::abs(p.position.y() - 10.13), 1.73, kExact) << p.position.transpose();
+        EXPECT_NEAR(p.position.z(), 10.0, kExact);
+    }
+    EXPECT_GT(groove, 100u);  // two lines of 30 mm
+    EXPECT_EQ(count(ideal.edges, JunctionStatus::NotBounding), 0u);
+}
+
 // A hole plunged half outside the stock's -x face: its wall meets that face and the top (or
 // the floor) at the four corners (0, 10 ± 3, 10) and (0, 10 ± 3, 5.3).
 TEST(ExactJunctions, CornersWhereAWallMeetsTwoPlanes) {

@@ -59,6 +59,16 @@ TEST(ExactSurface, HelixAndBullNosePassVerticesLieOnTheirSurfaces) {
     expect_vertices_on_their_surfaces(part);
 }
 
+// A conical mill's tip, cone, cylinder and rims: a V-groove, an arc, a plunge and ramps (flanks,
+// end cones, the flat tip's and the cone-cylinder rims' slanted cylinders).
+TEST(ExactSurface, ConicalMillVerticesLieOnTheirSurfaces) {
+    const test::MilledPart part(
+        kStock, {{1, Tool::make_cone(6, 90, 0, 12)}, {2, Tool::make_cone(8, 60, 1.3, 12)}},
+        "T1 M6\nG0 X-6 Y7.13 Z30\nG1 Z17.27\nX20.3\nG2 X29.57 Y16.4 I0 J9.27\nG1 X35 Y25 Z15.9\n"
+        "G0 Z30\nT2 M6\nG0 X8.2 Y23.1 Z30\nG1 Z16.11\nX21 Y20.4 Z14.62\nG0 Z30\nM30\n");
+    expect_vertices_on_their_surfaces(part);
+}
+
 // The simulator samples a bull-nose ramp: its surfaces are not claimed exact; ids no move makes
 // are unknown.
 TEST(ExactSurface, BullNoseRampIsSampledAndStrayIdsUnknown) {
@@ -101,6 +111,10 @@ TEST(ExactSurface, GradientsMatchTheValues) {
     forms.push_back({.form = ImplicitSurface::Form::Capsule, .motion = line, .radius = 3});
     forms.push_back(
         {.form = ImplicitSurface::Form::Rim, .motion = line, .radius = 4, .height = 0.5});
+    for (const sim::ToolMotion& path : {line, arc}) {
+        forms.push_back(
+            {.form = ImplicitSurface::Form::Cone, .motion = path, .inset = 0.4, .half_angle = 0.5});
+    }
     std::mt19937 random(7);
     std::uniform_real_distribution<double> coordinate(-8.0, 8.0);
     const double step = 1e-6;

@@ -27,6 +27,9 @@ Oracle match_oracle(const io::PlyMesh& ply, const std::string& name, const Mesh&
     const auto &nx = vertex_property(ply, "nx", name), &ny = vertex_property(ply, "ny", name),
                &nz = vertex_property(ply, "nz", name),
                &surface = vertex_property(ply, "surface", name);
+    const std::vector<double>*sx = ply.vertex_property("sx"), *sy = ply.vertex_property("sy"),
+          *sz = ply.vertex_property("sz");
+    const bool has_surface_points = sx && sy && sz;
     const PositionIndex index(ply.soup.points);
     Oracle oracle;
     oracle.normals.reserve(input.vertex_count());
@@ -41,6 +44,8 @@ Oracle match_oracle(const io::PlyMesh& ply, const std::string& name, const Mesh&
         }
         oracle.normals.push_back(Vec3(nx[*o], ny[*o], nz[*o]).normalized());
         oracle.surfaces.push_back(static_cast<std::int32_t>(surface[*o]));
+        if (has_surface_points)
+            oracle.surface_points.push_back(Vec3((*sx)[*o], (*sy)[*o], (*sz)[*o]));
     }
     return oracle;
 }

@@ -18,9 +18,10 @@ namespace resharp::eval {
 inline constexpr io::Rgb kEdgeTriangleColor{255, 210, 0};
 inline constexpr io::Rgb kCornerTriangleColor{230, 0, 230};
 
-/// Takes the oracle `ply` (vertex properties nx, ny, nz, surface; docs/oracle.md) read from
-/// `name` and the input mesh; gives the oracle's normal (normalised) and surface for each of
-/// the input's #V vertices, matched by position (PositionIndex).
+/// Takes the oracle `ply` (vertex properties nx, ny, nz, surface, and sx, sy, sz for the
+/// off-surface meshers; docs/oracle.md) read from `name` and the input mesh; gives the oracle's
+/// normal (normalised), surface and surface point (if given) for each of the input's #V
+/// vertices, matched by position (PositionIndex).
 /// \throws ReadError if a property is missing, InvalidInput (naming the first vertex) if an
 /// input vertex is not in the oracle.
 Oracle match_oracle(const io::PlyMesh& ply, const std::string& name, const Mesh& input);

@@ -53,7 +53,9 @@ public:
         for (int round = 0; round <= options_.max_continuations; ++round) {
             const std::optional<Vec3> x =
                 p.kind == IdealKind::Edge ? edge(p, surfaces) : corner(p, surfaces);
-            if (!x) return {};
+            // After a hand-over, no junction with the continuing surface means the vertices'
+            // own surfaces do not meet on the solid.
+            if (!x) return {round == 0 ? JunctionStatus::Unsolved : JunctionStatus::NotBounding};
             if (const std::optional<Outcome> done = check_sides(p, *x, surfaces)) return *done;
         }
         return {JunctionStatus::NotBounding};
@@ -69,7 +71,7 @@ private:
         for (std::size_t k = 0; k < side_count(p); ++k) {
             const Index w = p.vertices[k];
             const MachinedSolid::SurfaceNear s =
-                solid_.surface_near(oracle_.surfaces[w], mesh_.positions[w]);
+                solid_.surface_near(oracle_.surfaces[w], on_surface(w));
             if (s.kind == MachinedSolid::SurfaceKind::Unknown) {
                 throw InvalidInput("vertex " + std::to_string(w) + " lies on surface " +
                                    std::to_string(oracle_.surfaces[w]) +
@@ -78,7 +80,10 @@ private:
             if (s.kind == MachinedSolid::SurfaceKind::Sampled) {
                 return Outcome{JunctionStatus::SampledSurface};
             }
-            if (!(s.distance <= options_.on_surface_tolerance * h())) return Outcome{};
+            const double tolerance = oracle_.surface_points.empty()
+                                         ? options_.on_surface_tolerance
+                                         : options_.off_surface_tolerance;
+            if (!(s.distance <= tolerance * h())) return Outcome{};
             surfaces[k] = *s.surface;
         }
         return std::nullopt;
@@ -97,7 +102,7 @@ private:
                                  : Vec3::Zero();
         bool settled = true;
         for (std::size_t k = 0; k < side_count(p); ++k) {
-            const Probe probe = probe_side(surfaces[k], x, mesh_.positions[p.vertices[k]], tangent);
+            const Probe probe = probe_side(surfaces[k], x, on_surface(p.vertices[k]), tangent);
             if (probe.result == Probe::Result::Fails)
                 return Outcome{JunctionStatus::NotBounding, x};
             if (probe.result == Probe::Result::Bounds) continue;
@@ -114,6 +119,12 @@ private:
     }
 
     double h() const { return options_.solver.pitch; }
+
+    /// Where vertex w lies on its surface: the vertex itself, or the oracle's surface point
+    /// for an off-surface mesher.
+    const Vec3& on_surface(Index w) const {
+        return oracle_.surface_points.empty() ? mesh_.positions[w] : oracle_.surface_points[w];
+    }
 
     /// The junction nearest the edge's midpoint, searched from the eq. 5.2 point, then from the
     /// midpoint itself (where eq. 5.2 starts it on another branch).

@@ -24,7 +24,8 @@ enum class JunctionStatus : std::uint8_t {
     SampledSurface,  ///< a surface is a bull-nose ramp's, which the simulator samples: apart
     NotBounding,     ///< the surfaces meet, but not both bound the solid there (nor do
                      ///< surfaces continuing them smoothly): apart
-    Unsolved,        ///< no junction within reach of the edge, or a vertex off its surface
+    Unsolved,        ///< no junction of the vertices' surfaces within reach of the edge,
+                     ///< or a vertex off its surface (after a hand-over: NotBounding)
 };
 inline constexpr std::size_t kJunctionStatusCount = 4;
 
@@ -54,6 +55,9 @@ struct ExactJunctionOptions {
     /// job and the oracle disagree there). Binary STL rounds positions to float, about 1e-5 h on
     /// a part 100 mm long.
     double on_surface_tolerance = 1e-3;
+    /// In h: the same for the surface points of an off-surface mesher, which lie on the tangent
+    /// plane at a crossing near the vertex (up to 0.3 h off near edges, docs/oracle.md).
+    double off_surface_tolerance = 0.5;
 };
 
 struct ExactIdealPoints {

@@ -41,6 +41,40 @@ SurfaceValue rim(const ImplicitSurface& s, const Vec3& p) {
     return {d - s.radius, Vec3(g.x(), g.y(), -g.dot(delta.head<2>()) / delta.z())};
 }
 
+/// The tip position along a line motion that minimises the cone's value at p: g(s) = cos β
+/// |w - s e| + sin β dz s (w = p_xy - start_xy, e and dz the motion in plan and in z) is convex,
+/// so its stationary point, clamped to [0, 1], is the minimum. With τ = s |e| - w·e/|e| and q the
+/// distance of w from the line of e, g' = 0 where τ / sqrt(τ² + q²) = k = -tan β dz / |e|.
+double cone_tip_parameter(const ImplicitSurface& s, const Vec3& p) {
+    const Vec3 delta = s.motion.end - s.motion.start;
+    const Eigen::Vector2d e = delta.head<2>(), w = p.head<2>() - s.motion.start.head<2>();
+    const double a = e.norm();
+    if (a == 0.0) return delta.z() > 0.0 ? 0.0 : 1.0;  // a plunge: the lower end
+    const double k = -std::tan(s.half_angle) * delta.z() / a;
+    if (k >= 1.0) return 1.0;  // descending faster than the flank: the end is lowest
+    if (k <= -1.0) return 0.0;
+    const double along = w.dot(e) / a;
+    const double across = std::sqrt(std::max(w.squaredNorm() - along * along, 0.0));
+    const double tau = k * across / std::sqrt(1.0 - k * k);
+    return std::clamp((along + tau) / a, 0.0, 1.0);
+}
+
+SurfaceValue cone(const ImplicitSurface& s, const Vec3& p) {
+    Vec3 tip = s.motion.start;
+    Vec2 away;
+    if (s.motion.kind == sim::ToolMotion::Kind::Arc) {  // horizontal: the nearest point in plan
+        away = p.head<2>() - sim::nearest_on_path(s.motion, p.head<2>());
+    } else {
+        tip += cone_tip_parameter(s, p) * (s.motion.end - s.motion.start);
+        away = p.head<2>() - tip.head<2>();
+    }
+    const double c = std::cos(s.half_angle), sn = std::sin(s.half_angle);
+    const double d = away.norm();
+    const Vec2 g = d > 0.0 ? Vec2(away / d) : Vec2::Zero();
+    // The gradient at fixed s: s minimises, so its own change adds nothing (envelope theorem).
+    return {c * (d - s.inset) - sn * (p.z() - tip.z()), Vec3(c * g.x(), c * g.y(), -sn)};
+}
+
 ImplicitSurface plane(const Vec3& normal, double offset) {
     ImplicitSurface s;
     s.form = Form::Plane;
@@ -54,6 +88,45 @@ ImplicitSurface around(Form form, const sim::ToolMotion& motion, double radius) 
     s.form = form;
     s.motion = motion;
     s.radius = radius;
+    return s;
+}
+
+/// A ball end's or bull-nose's corner: a capsule around the ball centre's path on a ramp, a
+/// sphere or torus swept along a horizontal path or plunged to `low`.
+std::optional<ImplicitSurface> corner(const sim::SweptVolume& volume, double low) {
+    const sim::Tool& tool = volume.tool();
+    if (tool.corner_radius == 0.0 || tool.shape == sim::ToolShape::Cone ||
+        volume.method() == Method::FlatRamp) {
+        return std::nullopt;
+    }
+    if (volume.method() == Method::BallRamp) {
+        sim::ToolMotion centre = volume.motion();
+        centre.start.z() += tool.radius;
+        centre.end.z() += tool.radius;
+        return around(Form::Capsule, centre, tool.radius);
+    }
+    ImplicitSurface s = around(Form::Toroidal, volume.motion(), tool.corner_radius);
+    s.inset = tool.radius - tool.corner_radius;
+    s.height = low + tool.corner_radius;
+    return s;
+}
+
+/// The slanted cylinder a rim sweeps on a ramp: the bottom rim where the side (or the cone)
+/// starts (a flat end's tip, a ball's equator, a conical mill's flat tip), the rim between a
+/// cone and its cylinder, the top rim.
+ImplicitSurface swept_rim(const sim::SweptVolume& volume, ToolPart part) {
+    const sim::Tool& tool = volume.tool();
+    const bool is_cone = tool.shape == sim::ToolShape::Cone;
+    ImplicitSurface s = around(Form::Rim, volume.motion(), tool.radius);
+    if (part == ToolPart::TopRim) {
+        s.height = tool.flute_length;
+    } else if (part == ToolPart::ConeRim) {
+        s.height = tool.cone_height();
+    } else if (is_cone) {
+        s.radius = tool.tip_radius;
+    } else {
+        s.height = volume.method() == Method::BallRamp ? tool.radius : 0.0;
+    }
     return s;
 }
 
@@ -78,6 +151,8 @@ SurfaceValue ImplicitSurface::evaluate(const Vec3& p) const {
             return capsule(*this, p);
         case Form::Rim:
             return rim(*this, p);
+        case Form::Cone:
+            return cone(*this, p);
     }
     return {};
 }
@@ -93,44 +168,33 @@ std::optional<ImplicitSurface> tool_part_surface(const sim::SweptVolume& volume,
     const sim::Tool& tool = volume.tool();
     const sim::ToolMotion& motion = volume.motion();
     const Method method = volume.method();
-    // Sampled bull-nose ramps are not exact; V-bit surfaces are not modelled here yet: both
-    // junctions are counted apart, not in the rate.
-    if (method == Method::SampledRamp || method == Method::ConeRamp) return std::nullopt;
+    if (method == Method::SampledRamp) return std::nullopt;
     const double low = std::min(motion.start.z(), motion.end.z());
     const double high = std::max(motion.start.z(), motion.end.z());
-    const bool ramp = method == Method::FlatRamp || method == Method::BallRamp;
+    const bool ramp =
+        method == Method::FlatRamp || method == Method::BallRamp || method == Method::ConeRamp;
+    const bool is_cone = tool.shape == sim::ToolShape::Cone;
     switch (part) {
         case ToolPart::Bottom:
             // The lowest copy's disk; a ball end ramping has none (its ball is the Corner).
             if (method == Method::BallRamp) return std::nullopt;
             return plane(-Vec3::UnitZ(), -low);
-        case ToolPart::Corner: {
-            if (tool.corner_radius == 0.0 || method == Method::FlatRamp) return std::nullopt;
-            if (method == Method::BallRamp) {
-                sim::ToolMotion centre = motion;
-                centre.start.z() += tool.radius;
-                centre.end.z() += tool.radius;
-                return around(Form::Capsule, centre, tool.radius);
-            }
-            ImplicitSurface s = around(Form::Toroidal, motion, tool.corner_radius);
-            s.inset = tool.radius - tool.corner_radius;
-            s.height = low + tool.corner_radius;
-            return s;
-        }
+        case ToolPart::Corner:
+            return corner(volume, low);
         case ToolPart::Side:
             return around(Form::Wall, motion, tool.radius);
         case ToolPart::Top:
             return plane(Vec3::UnitZ(), high + tool.flute_length);
-        case ToolPart::Cone:
-        case ToolPart::ConeRim:
-            return std::nullopt;  // V-bit surfaces: not modelled here yet (see above)
         case ToolPart::BottomRim:
-        case ToolPart::TopRim: {
-            if (!ramp) return std::nullopt;
-            ImplicitSurface s = around(Form::Rim, motion, tool.radius);
-            // The bottom rim is where the side starts: the tip of a flat end, the ball's equator.
-            const double bottom = method == Method::BallRamp ? tool.radius : 0.0;
-            s.height = part == ToolPart::TopRim ? tool.flute_length : bottom;
+        case ToolPart::TopRim:
+        case ToolPart::ConeRim:
+            if (!ramp || (part == ToolPart::ConeRim && !is_cone)) return std::nullopt;
+            return swept_rim(volume, part);
+        case ToolPart::Cone: {
+            if (!is_cone) return std::nullopt;
+            ImplicitSurface s = around(Form::Cone, motion, 0.0);
+            s.inset = tool.tip_radius;
+            s.half_angle = tool.half_angle;
             return s;
         }
     }

@@ -32,14 +32,18 @@ struct ImplicitSurface {
                    ///< ball end ramping (the ends are the ball centre's, not the tip's)
         Rim,       ///< |p_xy - c_xy(p_z)| - radius, c(z) the point of the line through the
                    ///< motion's ends at height z - height: the slanted cylinder a rim sweeps
+        Cone,      ///< min over the tip positions c of the motion of cos β (|p_xy - c_xy| -
+                   ///< inset) - sin β (p_z - c_z): a conical mill's cone swept along a line, an
+                   ///< arc or a ramp (flanks and end cones; the union's distance outside it)
     };
     Form form = Form::Plane;
     Vec3 normal = Vec3::UnitZ();  ///< Plane: unit normal
     double offset = 0.0;          ///< Plane: normal · p on the plane, mm
     sim::ToolMotion motion;       ///< the path of every other form
     double radius = 0.0;          ///< mm
-    double inset = 0.0;           ///< Toroidal: d(p) of the corner circle's centre, mm
-    double height = 0.0;          ///< Toroidal: z of that centre; Rim: rim height above the tip
+    double inset = 0.0;       ///< Toroidal: d(p) of the corner circle's centre; Cone: tip radius
+    double height = 0.0;      ///< Toroidal: z of that centre; Rim: rim height above the tip
+    double half_angle = 0.0;  ///< Cone: β, half the included tip angle, rad
 
     /// The value and gradient at p. The gradient is zero where the form has none (on a Wall's
     /// path, at a Capsule's axis).

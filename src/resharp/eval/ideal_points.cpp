@@ -44,7 +44,8 @@ bool beyond_chord(const Mesh& mesh, const Connectivity& c, const Oracle& o, Inde
 
 void check_oracle(const Oracle& oracle, const Mesh& mesh) {
     if (oracle.normals.size() != mesh.vertex_count() ||
-        oracle.surfaces.size() != mesh.vertex_count()) {
+        oracle.surfaces.size() != mesh.vertex_count() ||
+        (!oracle.surface_points.empty() && oracle.surface_points.size() != mesh.vertex_count())) {
         throw InvalidInput("the oracle does not have one normal and surface per vertex");
     }
 }

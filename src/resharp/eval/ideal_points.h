@@ -15,6 +15,9 @@ namespace resharp::eval {
 struct Oracle {
     std::vector<Vec3> normals;           ///< #V exact unit surface normals
     std::vector<std::int32_t> surfaces;  ///< #V id of the surface each vertex lies on
+    /// #V, or empty where every vertex lies on its surface (the default mesher): the exact
+    /// surface point taken for each vertex of an off-surface mesher (docs/oracle.md, sx sy sz).
+    std::vector<Vec3> surface_points;
 };
 
 /// Where an ideal sharp point comes from.
@@ -42,7 +45,8 @@ struct IdealPointOptions {
     double sharp_angle_deg = 30.0;
 };
 
-/// \throws InvalidInput unless the oracle has one normal and one surface per vertex of `mesh`.
+/// \throws InvalidInput unless the oracle has one normal and one surface per vertex of `mesh`,
+/// and no surface points or one per vertex.
 void check_oracle(const Oracle& oracle, const Mesh& mesh);
 
 /// True when vertices u and v meet at a sharp junction: they lie on different surfaces and

@@ -59,7 +59,7 @@ public:
         Plunge,      ///< Z only: the tool at the lower end, its top at the upper end
         FlatRamp,    ///< flat end, XY and Z together
         BallRamp,    ///< ball end, XY and Z together
-        ConeRamp,    ///< V-bit, XY and Z together (cone_ramp.h)
+        ConeRamp,    ///< conical mill, XY and Z together (cone_ramp.h)
         SampledRamp  ///< bull-nose, XY and Z together: copies every bullnose_step (not exact)
     };
     Method method() const { return method_; }
