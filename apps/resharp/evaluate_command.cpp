@@ -264,7 +264,8 @@ void run_evaluate(EvaluateArguments args) {
     const double tau = args.restoration.tolerance * h;
 
     json j;
-    j["ideal_points_on"] = reference.machined ? "the exact junction" : "first order (eq. 5.2)";
+    j["ideal_points_on"] =
+        reference.machined ? "the exact junction" : "first-order points (eq. 5.2)";
     j["restoration_rate"] = score.rate;
     j["restoration_rate_first_order"] = first.rate;
     // The input's own rate on the exact junction: the points an input vertex already restores.
@@ -346,10 +347,10 @@ void run_evaluate(EvaluateArguments args) {
     if (args.quiet) return;
     std::ostringstream s;
     const std::size_t apart = first.ideal_edges + first.ideal_corners - ideal.points.size();
-    s << "restoration rate " << score.rate * 100 << " % on the exact junction (edges "
-      << score.restored_edges << "/" << score.ideal_edges << ", corners " << score.restored_corners
-      << "/" << score.ideal_corners << "; " << apart << " counted apart), "
-      << score.rate_within_reach * 100 << " % of the "
+    s << "restoration rate " << score.rate * 100 << " % on "
+      << j["ideal_points_on"].get<std::string>() << " (edges " << score.restored_edges << "/"
+      << score.ideal_edges << ", corners " << score.restored_corners << "/" << score.ideal_corners
+      << "; " << apart << " counted apart), " << score.rate_within_reach * 100 << " % of the "
       << score.ideal_edges + score.ideal_corners - score.beyond_chord
       << " points within reach of an edge split; restoration rate first order (eq. 5.2) "
       << first.rate * 100 << " %; false insertions " << score.false_insertions << ", flipped "
