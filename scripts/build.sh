@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Configures and builds resharp into BUILD_DIR (default: build). Extra arguments go to CMake.
+# TARGETS (space-separated) builds only those targets, e.g. TARGETS=resharp_cli for the binary.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${BUILD_DIR:-build}
@@ -10,4 +11,6 @@ if [[ ! -f "$build_dir/CMakeCache.txt" ]]; then
 else
     cmake -S . -B "$build_dir" "$@" >/dev/null
 fi
-cmake --build "$build_dir" --parallel "$(nproc)"
+targets=()
+for target in ${TARGETS:-}; do targets+=(--target "$target"); done
+cmake --build "$build_dir" --parallel "$(nproc)" "${targets[@]}"

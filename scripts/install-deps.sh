@@ -10,6 +10,7 @@ packages=(
     libgtest-dev libgmock-dev libbenchmark-dev
     clang clang-format libclang-rt-dev
     python3
+    python3-dev python3-venv pybind11-dev python3-pybind11 python3-numpy python3-pytest
 )
 
 sudo_cmd=()
