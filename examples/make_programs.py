@@ -7,6 +7,10 @@
   cavity    a drafted cavity whose floor, walls and top are all ball-end
             finished, so every face is scalloped (Type 3 edges)
   impeller  blades left standing between ball-end scalloped channels (3-axis)
+  vcarve    V-grooves cut by V-bits (straight, at several depths, along arcs and one
+            ramping so its width grows) and 45-degree chamfers cut by a chamfer mill
+            along the stock's top edges and a round pocket's rim: slanted flanks
+            that are real faces
 
 Each part gets examples/<part>/<part>.nc and examples/<part>/job.json. Run from
 anywhere: python3 examples/make_programs.py. Only the standard library is used and
@@ -265,8 +269,78 @@ def impeller():
     write_part("impeller", [0, 0, 0], [100, 100, 36], tools, p.finish())
 
 
+def vcarve():
+    # Coordinates are kept off round values: with a 90-degree bit a flank |y - y0| = z - z_tip
+    # passes exactly through grid nodes when y0 - z_tip is a multiple of the pitch, and rounding
+    # then tells a node's state differently on the rays through it.
+    top = 20.0
+    p = Program("vcarve: V-grooves and chamfers")
+
+    def groove(points):
+        """A V-groove through (x, y, depth) points: plunge at the first, cut through the rest."""
+        p.polyline([(x, y, top - depth) for x, y, depth in points])
+        p.retract()
+
+    p.tool(1, "V-bit 90 degrees D12")
+    # Three straight grooves of growing depth (about 3, 5 and 7 mm wide at the top face).
+    for k, depth in enumerate((1.53, 2.47, 3.61)):
+        groove([(8.17, 50.3 + 9.0 * k, depth), (62.17, 50.3 + 9.0 * k, depth)])
+    # A zigzag like a letter W, and a groove that ramps from 0.53 to 3.47 mm deep.
+    groove([(10.13, 40.21, 2.13), (17.13, 14.21, 2.13), (24.13, 32.21, 2.13),
+            (31.13, 14.21, 2.13), (38.13, 40.21, 2.13)])
+    groove([(44.11, 8.23, 0.53), (62.11, 40.23, 3.47)])
+    # A circular groove of radius 10 around (82.13, 62.27), cut with two half arcs.
+    cx, cy = 82.13, 62.27
+    p.retract()
+    p.rapid(X=cx + 10.0, Y=cy)
+    p.feed(Z=top - 2.07, F=600)
+    p.arc(False, cx - 10.0, cy, -10.0, 0.0)
+    p.arc(False, cx + 10.0, cy, 10.0, 0.0)
+    p.retract()
+
+    p.tool(2, "V-bit 60 degrees D8")
+    groove([(70.0, 8.0, 2.5), (96.0, 8.0, 2.5), (96.0, 44.0, 2.5)])
+
+    p.tool(3, "flat end mill D8")
+    # A round pocket of radius 9 around (80.07, 26.13), cut ring by ring, 6 mm deep.
+    cx, cy, wall = 80.07, 26.13, 9.0
+    p.rapid(X=cx, Y=cy)
+    p.feed(Z=top - 6.0)
+    for ring in (2.0, 5.0):
+        p.feed(X=cx + ring, Y=cy)
+        p.arc(False, cx - ring, cy, -ring, 0.0)
+        p.arc(False, cx + ring, cy, ring, 0.0)
+    p.retract()
+
+    p.tool(4, "chamfer mill 90 degrees D10, tip D1")
+    # A 1.2 mm chamfer on the pocket's rim: tip 2.5 mm down, so its flank is 1.8 mm off the
+    # axis at the chamfer's foot, and the axis runs on a circle 1.8 mm inside the wall.
+    ring = wall - 1.8
+    p.rapid(X=cx + ring, Y=cy)
+    p.feed(Z=top - 2.5)
+    p.arc(False, cx - ring, cy, -ring, 0.0)
+    p.arc(False, cx + ring, cy, ring, 0.0)
+    p.retract()
+    # A 1.44 mm chamfer along the stock's top edges: tip 3.07 mm down, 2.13 mm outside each face.
+    x0, y0, x1, y1 = -2.13, -2.13, 102.13, 82.13
+    p.rapid(X=x0, Y=y0)
+    p.feed(Z=top - 3.07)
+    for x, y in ((x1, y0), (x1, y1), (x0, y1), (x0, y0)):
+        p.feed(X=x, Y=y)
+    p.retract()
+    tools = [
+        {"number": 1, "type": "vbit", "diameter": 12, "tip_angle": 90, "flute_length": 20},
+        {"number": 2, "type": "vbit", "diameter": 8, "tip_angle": 60, "flute_length": 20},
+        {"number": 3, "type": "flat", "diameter": 8, "flute_length": 25},
+        {"number": 4, "type": "vbit", "diameter": 10, "tip_angle": 90, "tip_diameter": 1,
+         "flute_length": 15},
+    ]
+    write_part("vcarve", [0, 0, 0], [100, 80, 20], tools, p.finish())
+
+
 if __name__ == "__main__":
     mech()
     frogface()
     cavity()
     impeller()
+    vcarve()

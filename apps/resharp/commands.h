@@ -20,5 +20,7 @@ enum ExitCode : int {
 void add_restore_command(CLI::App& app);
 void add_simulate_command(CLI::App& app);
 void add_evaluate_command(CLI::App& app);
+/// Only in builds with the viewer (RESHARP_BUILD_VIEWER).
+void add_view_command(CLI::App& app);
 
 }  // namespace resharp::cli

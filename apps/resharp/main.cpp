@@ -1,9 +1,7 @@
 #include <cstdio>
-#include <exception>
-#include <new>
 
 #include "commands.h"
-#include "resharp/core/errors.h"
+#include "exit_status.h"
 
 namespace {
 
@@ -29,22 +27,20 @@ int main(int argc, char** argv) {
     add_restore_command(app);
     add_simulate_command(app);
     add_evaluate_command(app);
+#ifdef RESHARP_HAS_VIEWER
+    add_view_command(app);
+#endif
 
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         const int code = app.exit(e);
         return code == 0 ? kSuccess : kUsageError;
-    } catch (const resharp::ReadError& e) {  // includes ParseError
-        return fail(kBadInput, e.what());
-    } catch (const resharp::InvalidInput& e) {
-        return fail(kBadInput, e.what());
-    } catch (const resharp::WriteError& e) {
-        return fail(kOutputFailed, e.what());
-    } catch (const std::bad_alloc&) {
-        return fail(kInternalError, "out of memory");
-    } catch (const std::exception& e) {
-        return fail(kInternalError, e.what());
+    } catch (const ExitWith& e) {
+        return e.code;
+    } catch (...) {
+        const Failure failure = current_failure();
+        return fail(failure.code, failure.message.c_str());
     }
     return kSuccess;
 }

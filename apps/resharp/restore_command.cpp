@@ -1,30 +1,24 @@
 #include <iostream>
 #include <map>
 #include <memory>
-#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
+#include "batch.h"
 #include "commands.h"
 #include "report_json.h"
-#include "resharp/core/errors.h"
-#include "resharp/io/atomic_file.h"
-#include "resharp/io/mesh_io.h"
 #include "resharp/pipeline/option_table.h"
-#include "resharp/pipeline/restore.h"
-#include "segments.h"
+#include "restore_file.h"
 
 namespace resharp::cli {
 namespace {
 
 struct RestoreArguments {
-    std::string input;
-    std::string output;
-    std::string report;
-    std::string segments;
+    std::vector<std::string> inputs;
+    RestoreTargets targets;  ///< input unset; folders in a batch
+    BatchSettings batch;
     bool ascii = false;
-    bool quiet = false;
     bool paper = false;
     RestoreOptions options;
 };
@@ -80,55 +74,18 @@ void bind_options(CLI::App& command, RestoreOptions& o, bool& paper) {
     for (CLI::Option* choice : paper_choices) paper_flag->excludes(choice);
 }
 
-/// The output files, opened before the work starts (a bad path fails at once) and committed
-/// together at the end: a run that fails anywhere leaves none of them.
-struct Outputs {
-    io::AtomicFile mesh;
-    std::optional<io::AtomicFile> segments;
-    std::optional<io::AtomicFile> report;
-
-    explicit Outputs(const RestoreArguments& args) : mesh(checked(args.output)) {
-        if (!args.segments.empty()) {
-            if (io::format_for_writing(args.segments) != io::MeshFormat::Ply) {
-                throw WriteError(args.segments,
-                                 "segments are written as vertex and face "
-                                 "colours, which only PLY stores: use .ply");
-            }
-            segments.emplace(args.segments);
-        }
-        if (!args.report.empty()) report.emplace(args.report);
+void run_restore(const RestoreArguments& args, const CLI::App& command) {
+    const RestoreOptions options = args.paper ? paper_variant(args.options) : args.options;
+    const io::Encoding encoding = args.ascii ? io::Encoding::Ascii : io::Encoding::Binary;
+    if (is_batch(args.inputs, args.targets.output)) {
+        run_batch(args.inputs, args.targets, args.batch, options, encoding, command);
+        return;
     }
-    void commit_all() {
-        mesh.commit();
-        if (segments) segments->commit();
-        if (report) report->commit();
-    }
-
-private:
-    static const std::string& checked(const std::string& path) {
-        io::format_for_writing(path);
-        return path;
-    }
-};
-
-void run_restore(const RestoreArguments& args) {
-    const Mesh input = weld(io::read_mesh(args.input));
-    Outputs outputs(args);
-    RestoreOptions options = args.paper ? paper_variant(args.options) : args.options;
-    options.keep_segmentation = outputs.segments.has_value();
-    const RestoreResult result = restore(input, options);
-
-    const io::WriteOptions encoding{.encoding =
-                                        args.ascii ? io::Encoding::Ascii : io::Encoding::Binary};
-    io::write_mesh(outputs.mesh, result.mesh, encoding);
-    if (outputs.segments) {
-        const SegmentColors colors = color_segments(result.segmentation);
-        io::write_mesh(*outputs.segments, input, encoding,
-                       {.vertex_colors = colors.vertex, .face_colors = colors.face});
-    }
-    if (outputs.report) outputs.report->stream() << report_to_json(result.report).dump(2) << "\n";
-    outputs.commit_all();
-    if (!args.quiet) std::cerr << summarize(result.report, args.input, args.output);
+    check_single_file(command);
+    RestoreTargets targets = args.targets;
+    targets.input = args.inputs.front();
+    const RestoreReport report = restore_file(targets, options, encoding);
+    if (!args.batch.quiet) std::cerr << summarize(report, targets.input, targets.output);
 }
 
 }  // namespace
@@ -140,17 +97,28 @@ void add_restore_command(CLI::App& app) {
         "Restore sharp edges and corners of a mesh made by grid-based machining "
         "simulation. Formats from the extension: .stl (binary or ASCII), .obj, .ply, "
         ".off.");
-    command->add_option("input", args->input, "mesh to restore")->required();
-    command->add_option("-o,--output", args->output, "restored mesh")->required();
-    command->add_option("--report", args->report, "write every count and stage time as JSON");
-    command->add_option("--segments", args->segments,
+    command->footer(std::string(kBatchHelp) + "\n\n" + app.get_footer());
+    command->add_option("input", args->inputs, "mesh to restore; several, or folders: a batch")
+        ->required();
+    command->add_option("-o,--output", args->targets.output, "restored mesh; a folder in a batch")
+        ->required();
+    command->add_option("--report", args->targets.report,
+                        "write every count and stage time as JSON (a folder in a batch)");
+    command->add_option("--segments", args->targets.segments,
                         "write the input as PLY with vertex colours (red: edge vertices) and face "
                         "colours (one per feature patch; yellow: edge triangles; magenta: corner "
-                        "triangles)");
+                        "triangles); a folder in a batch");
+#ifdef RESHARP_HAS_VIEWER
+    command->add_option("--html", args->targets.html,
+                        "write the viewer page: input and restored mesh side by side (a folder "
+                        "in a batch)");
+#endif
     command->add_flag("--ascii", args->ascii, "write STL and PLY as text instead of binary");
-    command->add_flag("-q,--quiet", args->quiet, "print no summary");
+    command->add_flag("-q,--quiet", args->batch.quiet,
+                      "print no summary (a batch still prints each failure)");
+    add_batch_options(*command, args->batch);
     bind_options(*command, args->options, args->paper);
-    command->callback([args] { run_restore(*args); });
+    command->callback([args, command] { run_restore(*args, *command); });
 }
 
 }  // namespace resharp::cli

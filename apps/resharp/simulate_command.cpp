@@ -3,10 +3,12 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <span>
 #include <sstream>
 #include <string>
 
 #include "commands.h"
+#include "resharp/core/errors.h"
 #include "resharp/core/stage_timer.h"
 #include "resharp/io/mesh_io.h"
 #include "resharp/sim/job.h"
@@ -20,7 +22,9 @@ struct SimulateArguments {
     std::string job;
     std::string output;
     std::string oracle;
-    double pitch = 0.0;  // 0: the job's
+    double pitch = 0.0;        // 0: the job's
+    std::string mesher;        // empty: the job's
+    int seam_duplicates = -1;  // -1: the job's
     bool ascii = false;
     bool quiet = false;
     sim::SimulationOptions options;
@@ -67,6 +71,22 @@ std::string default_output(const sim::Job& job) {
     return std::filesystem::path(job.program).replace_extension(".stl").string();
 }
 
+/// The grid meshed with the job's meshing options, the command line's where given. A seam
+/// count the grid cannot hold is reported against the job key or the flag that set it.
+sim::OracleMesh mesh(const sim::DexelGrid& grid, const sim::Job& job,
+                     const SimulateArguments& args) {
+    sim::MeshingOptions options = job.meshing;
+    if (!args.mesher.empty()) options.mesher = *sim::mesher_from_string(args.mesher);
+    if (args.seam_duplicates >= 0) options.seam_duplicates = args.seam_duplicates;
+    try {
+        return sim::mesh_dexels(grid, options);
+    } catch (const InvalidInput& e) {
+        throw InvalidInput((args.seam_duplicates >= 0 ? std::string("--seam-duplicates")
+                                                      : args.job + ": seam_duplicates") +
+                           ": " + e.what());
+    }
+}
+
 void run_simulate(const SimulateArguments& args) {
     sim::Job job = sim::read_job(args.job);
     sim::SimulationOptions options = args.options;
@@ -82,7 +102,7 @@ void run_simulate(const SimulateArguments& args) {
     }
     const auto simulation_time = simulation_timer.elapsed();
     const StageTimer meshing_timer;
-    const sim::OracleMesh meshed = sim::mesh_dexels(simulation.grid);
+    const sim::OracleMesh meshed = mesh(simulation.grid, job, args);
     const auto meshing_time = meshing_timer.elapsed();
 
     const std::string output = args.output.empty() ? default_output(job) : args.output;
@@ -90,8 +110,13 @@ void run_simulate(const SimulateArguments& args) {
                                         args.ascii ? io::Encoding::Ascii : io::Encoding::Binary};
     io::write_mesh(output, meshed.mesh, encoding);
     if (!args.oracle.empty()) {
+        // Vertices on the surface (mc) are their own surface points: no sx, sy, sz.
+        const bool on_surface = meshed.surface_points == meshed.mesh.positions;
         io::write_mesh(args.oracle, meshed.mesh, encoding,
-                       {.vertex_normals = meshed.normals, .vertex_surfaces = meshed.surface_ids});
+                       {.vertex_normals = meshed.normals,
+                        .vertex_surfaces = meshed.surface_ids,
+                        .vertex_surface_points = on_surface ? std::span<const Vec3>()
+                                                            : std::span(meshed.surface_points)});
     }
     if (args.quiet) return;
     const auto& counts = simulation.grid.spec.counts;
@@ -103,7 +128,11 @@ void run_simulate(const SimulateArguments& args) {
       << "  simulation " << seconds(simulation_time) << " s, meshing " << seconds(meshing_time)
       << " s\n"
       << "  " << meshed.mesh.face_count() << " triangles, " << meshed.mesh.vertex_count()
-      << " vertices -> " << output;
+      << " vertices";
+    if (meshed.stats.duplicated_triangles > 0) {
+        s << " (" << meshed.stats.duplicated_triangles << " duplicated on seams)";
+    }
+    s << " -> " << output;
     if (!args.oracle.empty()) s << ", oracle -> " << args.oracle;
     s << "\n";
     if (meshed.stats.clamped_vertices > 0) {
@@ -149,6 +178,17 @@ void add_simulate_command(CLI::App& app) {
         ->add_option("--bullnose-step", args->options.sweep.bullnose_step,
                      "spacing (mm) of the tool copies that sample a bull-nose ramp")
         ->capture_default_str();
+    command
+        ->add_option("--mesher", args->mesher,
+                     "how vertices are placed: mc (exact ray crossings), bisect (8 bisection "
+                     "steps), midpoint (cell edge midpoints), surface-nets (one per cell at the "
+                     "mean of its crossings); default: the job's, else mc")
+        ->check(CLI::IsMember({"mc", "bisect", "midpoint", "surface-nets"}));
+    command
+        ->add_option("--seam-duplicates", args->seam_duplicates,
+                     "write the triangles on K grid planes x = const twice, as parallel "
+                     "meshing jobs do on their seams; default: the job's, else 0")
+        ->check(CLI::NonNegativeNumber);
     command->add_flag("--ascii", args->ascii, "write STL and PLY as text instead of binary");
     command->add_flag("-q,--quiet", args->quiet, "no progress bar and no summary");
     command->callback([args] { run_simulate(*args); });

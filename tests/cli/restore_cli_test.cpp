@@ -3,12 +3,9 @@
 // `resharp evaluate` on the simulated example, for what its reference rows promise.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "cli_run.h"
 
@@ -18,47 +15,9 @@ namespace {
 namespace fs = std::filesystem;
 
 /// The shipped example, quoted.
-std::string example() { return quoted(fs::path(RESHARP_SOURCE_DIR) / "examples" / "bracket.stl"); }
+std::string example() { return quoted(example_mesh()); }
 
-class RestoreCli : public ::testing::Test {
-protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        // One flat directory per test: ctest runs each test in a process of its own, and a
-        // per-process parent directory would be left behind empty.
-        dir_ = fs::temp_directory_path() /
-               ("resharp_restore_cli_" + std::to_string(::getpid()) + "_" + info->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    /// Runs `resharp ARGS` through the shell (so `prefix` can set limits).
-    CliRun resharp(const std::string& args, const std::string& prefix = "") const {
-        return run_shell(prefix + std::string(RESHARP_CLI) + " " + args, dir_ / "stderr.txt");
-    }
-    CliRun restore(const std::string& args, const std::string& prefix = "") const {
-        return resharp("restore " + args, prefix);
-    }
-    /// The scratch file `name`, quoted for the shell.
-    std::string path(const std::string& name) const { return quoted(dir_ / name); }
-    /// Every file in the scratch folder except the captured stderr.
-    std::vector<std::string> outputs() const {
-        std::vector<std::string> names;
-        for (const auto& entry : fs::directory_iterator(dir_)) {
-            if (entry.path().filename() != "stderr.txt") names.push_back(entry.path().filename());
-        }
-        return names;
-    }
-    static std::string bytes_of(const fs::path& file) {
-        std::ifstream in(file, std::ios::binary);
-        std::stringstream s;
-        s << in.rdbuf();
-        return s.str();
-    }
-
-    fs::path dir_;
-};
+using RestoreCli = CliTest;
 
 TEST_F(RestoreCli, RestoresTheExampleWithReportSegmentsAndSummary) {
     const CliRun run = restore(example() + " -o " + path("out.stl") + " --report " +

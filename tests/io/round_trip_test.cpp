@@ -58,11 +58,13 @@ TEST_P(AttributeRoundTrip, NormalsExactSurfacesAndColours) {
     const Mesh mesh = test::torus_mesh(12, 9);
     std::vector<Vec3> normals;
     std::vector<std::int32_t> surfaces;
+    std::vector<Vec3> surface_points;
     std::vector<Rgb> vertex_colors;
     for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
         normals.push_back(
             Vec3(mesh.positions[v].x(), 1.0 / 3.0, -0.1 * static_cast<double>(v)).normalized());
         surfaces.push_back(static_cast<std::int32_t>(v * 7919) - 100000);
+        surface_points.push_back(mesh.positions[v] / 3.0 + Vec3(0.1, -1e-17, 1e300));
         vertex_colors.push_back({std::uint8_t(v), std::uint8_t(255 - v), 128});
     }
     std::vector<Rgb> face_colors(mesh.face_count(), Rgb{1, 2, 3});
@@ -72,6 +74,7 @@ TEST_P(AttributeRoundTrip, NormalsExactSurfacesAndColours) {
     write_mesh(path, mesh, {.encoding = GetParam()},
                {.vertex_normals = normals,
                 .vertex_surfaces = surfaces,
+                .vertex_surface_points = surface_points,
                 .vertex_colors = vertex_colors,
                 .face_colors = face_colors});
     const PlyMesh read = read_ply_with_properties(path);
@@ -82,6 +85,9 @@ TEST_P(AttributeRoundTrip, NormalsExactSurfacesAndColours) {
         EXPECT_EQ((*read.vertex_property("ny"))[v], normals[v].y());
         EXPECT_EQ((*read.vertex_property("nz"))[v], normals[v].z());
         EXPECT_EQ((*read.vertex_property("surface"))[v], surfaces[v]);
+        EXPECT_EQ((*read.vertex_property("sx"))[v], surface_points[v].x());
+        EXPECT_EQ((*read.vertex_property("sy"))[v], surface_points[v].y());
+        EXPECT_EQ((*read.vertex_property("sz"))[v], surface_points[v].z());
         EXPECT_EQ((*read.vertex_property("green"))[v], vertex_colors[v].green);
     }
     EXPECT_EQ(read.face_property("blue")->front(), 3);

@@ -114,6 +114,17 @@ TEST(DoNoHarm, PerturbedPlatesFinishAndComeOutNoWorse) {
     }
 }
 
+TEST(DoNoHarm, EveryMeshersPlateComesOutNoWorse) {
+    const RestoreOptions options;
+    for (sim::Mesher mesher :
+         {sim::Mesher::Bisection, sim::Mesher::Midpoint, sim::Mesher::SurfaceNets}) {
+        SCOPED_TRACE(sim::to_string(mesher));
+        const test::SampledShape shape = test::sampled_drilled_plate(0.5, mesher);
+        const RestoreResult r = restore(shape.mesh, options);
+        expect_no_harm(shape.mesh, r, options);
+    }
+}
+
 TEST(DoNoHarm, TheMeshThatHungRestoresWithinItsBounds) {
     const Mesh input = weld(io::read_mesh(RESHARP_TEST_DATA_DIR "/relief_hang.stl"));
     ASSERT_EQ(input.face_count(), 113174u);

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <sstream>
+#include <string>
+
 #include "resharp/mesh/connectivity.h"
 #include "resharp/mesh/diagnostics.h"
 #include "resharp/mesh/mesh.h"
@@ -25,6 +28,14 @@ inline void expect_clean_closed_outward(const Mesh& mesh) {
     expect_closed_manifold(mesh);
     EXPECT_EQ(diagnose(mesh, build_connectivity(mesh)).isolated_vertices, 0u);
     EXPECT_GT(signed_volume(mesh), 0.0);
+}
+
+/// A measured value for RecordProperty, to three significant digits.
+inline std::string short_number(double value) {
+    std::ostringstream s;
+    s.precision(3);
+    s << value;
+    return s.str();
 }
 
 }  // namespace resharp::test

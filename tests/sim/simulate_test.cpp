@@ -105,7 +105,7 @@ TEST(Simulate, RejectsToolsMissingFromTheTable) {
         simulate(kStock, {}, path);
         FAIL();
     } catch (const InvalidInput& e) {
-        EXPECT_NE(std::string(e.what()).find("line 2 uses tool T7"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("test.nc: line 2: uses tool T7"), std::string::npos);
     }
 }
 

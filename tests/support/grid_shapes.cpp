@@ -76,8 +76,9 @@ void add_box_edges(SampledShape& shape, const Eigen::Matrix3d& rotation, const V
 }
 
 /// Meshes the grid and copies the mesh and oracle into the shape.
-void mesh_into(SampledShape& shape, const sim::DexelGrid& grid) {
-    sim::OracleMesh meshed = sim::mesh_dexels(grid);
+void mesh_into(SampledShape& shape, const sim::DexelGrid& grid,
+               sim::Mesher mesher = sim::Mesher::MarchingCubes) {
+    sim::OracleMesh meshed = sim::mesh_dexels(grid, {.mesher = mesher});
     shape.mesh = std::move(meshed.mesh);
     shape.exact_normals = std::move(meshed.normals);
     shape.surface_ids = std::move(meshed.surface_ids);
@@ -166,7 +167,7 @@ SampledShape sampled_l_block(double pitch) {
     return shape;
 }
 
-SampledShape sampled_drilled_plate(double pitch) {
+SampledShape sampled_drilled_plate(double pitch, sim::Mesher mesher) {
     const Box3 plate(Vec3(0.37, 0.29, 0.41), Vec3(14.21, 12.13, 4.07));
     const Eigen::Vector2d axis(7.23, 6.17);
     const double radius = 3.08;
@@ -217,7 +218,7 @@ SampledShape sampled_drilled_plate(double pitch) {
                                 .top_surface = 8});
     sim::DexelGrid grid = sim::sample_solid(sim::grid_enclosing(plate, pitch), solid);
     sim::subtract(grid, drill);
-    mesh_into(shape, grid);
+    mesh_into(shape, grid, mesher);
     return shape;
 }
 

@@ -76,8 +76,10 @@ SampledShape sampled_l_block(double pitch = 0.5);
 /// A plate [0.37, 14.21] x [0.29, 12.13] x [0.41, 4.07] (faces 0..5) drilled through by a
 /// vertical hole of radius 3.08 around (7.23, 6.17) (face 6, the hole wall). Edges: the 12 box
 /// edges and the two circles where the hole meets the top (z = 4.07) and bottom (z = 0.41) faces;
-/// 8 corners.
-SampledShape sampled_drilled_plate(double pitch = 0.5);
+/// 8 corners. Meshed by `mesher` (the exact data are those of the nearest surface point for the
+/// meshers that place vertices off the surface).
+SampledShape sampled_drilled_plate(double pitch = 0.5,
+                                   sim::Mesher mesher = sim::Mesher::MarchingCubes);
 
 /// A box of half-sizes (5.13, 3.92, 2.87) centred at (0.11, 0.07, 0.13) in its own frame,
 /// rotated 30° about x and then 30° about y: x_world = Ry(30°) Rx(30°) x_local + centre. Faces 0..5

@@ -21,12 +21,14 @@ struct Rgb {
 struct MeshAttributes {
     std::span<const Vec3> vertex_normals = {};           ///< #V, written as `double nx, ny, nz`
     std::span<const std::int32_t> vertex_surfaces = {};  ///< #V, written as `int surface`
+    /// #V, written as `double sx, sy, sz` (the simulator's nearest exact surface point)
+    std::span<const Vec3> vertex_surface_points = {};
     std::span<const Rgb> vertex_colors = {};  ///< #V, written as `uchar red, green, blue`
     std::span<const Rgb> face_colors = {};    ///< #F, written as `uchar red, green, blue`
 
     bool empty() const {
-        return vertex_normals.empty() && vertex_surfaces.empty() && vertex_colors.empty() &&
-               face_colors.empty();
+        return vertex_normals.empty() && vertex_surfaces.empty() && vertex_surface_points.empty() &&
+               vertex_colors.empty() && face_colors.empty();
     }
 };
 

@@ -350,6 +350,9 @@ void write_header(detail::OutputBuffer& out, const Mesh& mesh, Encoding encoding
         out.text("property double nx\nproperty double ny\nproperty double nz\n");
     }
     if (!attributes.vertex_surfaces.empty()) out.text("property int surface\n");
+    if (!attributes.vertex_surface_points.empty()) {
+        out.text("property double sx\nproperty double sy\nproperty double sz\n");
+    }
     constexpr const char* kRgb = "property uchar red\nproperty uchar green\nproperty uchar blue\n";
     if (!attributes.vertex_colors.empty()) out.text(kRgb);
     out.text("element face ");
@@ -367,6 +370,9 @@ void write_body(Rows& rows, const Mesh& mesh, const MeshAttributes& attributes) 
             for (Eigen::Index i = 0; i < 3; ++i) rows.put(attributes.vertex_normals[v][i]);
         }
         if (!attributes.vertex_surfaces.empty()) rows.put(attributes.vertex_surfaces[v]);
+        if (!attributes.vertex_surface_points.empty()) {
+            for (Eigen::Index i = 0; i < 3; ++i) rows.put(attributes.vertex_surface_points[v][i]);
+        }
         if (!attributes.vertex_colors.empty()) put_rgb(rows, attributes.vertex_colors[v]);
         rows.end_row();
     }

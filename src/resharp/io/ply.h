@@ -62,12 +62,13 @@ PlyMesh read_ply_with_properties(std::string_view bytes, const std::string& name
 PlyMesh read_ply_with_properties(const std::filesystem::path& path);
 
 /// Writes `mesh` as PLY in `encoding` with the non-empty `attributes`: `double x, y, z`, then
-/// `double nx, ny, nz`, `int surface`, `uchar red, green, blue` per vertex; a
+/// `double nx, ny, nz`, `int surface`, `double sx, sy, sz`, `uchar red, green, blue` per vertex; a
 /// `list uchar int vertex_indices` and `uchar red, green, blue` per face. Doubles keep every
 /// bit (ASCII uses the shortest decimal form that reads back exactly). Byte-deterministic.
 /// Check `out`'s state afterwards.
 /// \throws InvalidInput if `mesh` has no triangles, an index out of range or a NaN coordinate,
-/// or an attribute is neither empty nor one per element, or a normal is NaN or infinite.
+/// or an attribute is neither empty nor one per element, or a normal or surface point is NaN or
+/// infinite.
 void write_ply(std::ostream& out, const Mesh& mesh, Encoding encoding,
                const MeshAttributes& attributes = {});
 

@@ -108,8 +108,8 @@ SplitMesh unchanged(const Mesh& mesh) {
 
 /// Invariants of a split the harm check accepted: the input vertices first and unchanged, every
 /// source face valid and in order, pieces only on faces with a crossing edge or a corner role.
-bool is_sound_split(const InputSurface& input, const BandClassification& bands,
-                    const SplitMesh& split) {
+[[maybe_unused]] bool is_sound_split(const InputSurface& input, const BandClassification& bands,
+                                     const SplitMesh& split) {
     const Mesh& in = input.mesh;
     if (split.mesh.vertex_count() < in.vertex_count()) return false;
     if (!std::equal(in.positions.begin(), in.positions.end(), split.mesh.positions.begin()))
@@ -128,7 +128,8 @@ bool is_sound_split(const InputSurface& input, const BandClassification& bands,
 
 /// Invariant of the split: it adds no boundary, non-manifold or inconsistent edge (every edge
 /// point splits both faces of its edge; no point lies on a defective edge).
-bool adds_no_open_or_nonmanifold_edge(const InputSurface& input, const SplitMesh& split) {
+[[maybe_unused]] bool adds_no_open_or_nonmanifold_edge(const InputSurface& input,
+                                                       const SplitMesh& split) {
     const MeshDiagnostics before = diagnose(input.mesh, input.connectivity);
     const MeshDiagnostics after = diagnose(split.mesh, build_connectivity(split.mesh));
     return after.boundary_edges <= before.boundary_edges &&
@@ -200,7 +201,7 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
             RESHARP_EXPENSIVE_ASSERT(adds_no_open_or_nonmanifold_edge(input, r.output));
             return r;
         }
-        const std::size_t before = r.undone_points;
+        [[maybe_unused]] const std::size_t before = r.undone_points;
         withdraw_points_of(harm.harmful_faces, guarded.accepted, withdrawn, r.undone_points);
         RESHARP_ASSERT(r.undone_points > before);
     }

@@ -258,8 +258,8 @@ std::vector<Index> faces_with_points(const PointSlots& slots) {
 
 /// Every slot of `accepted` holds the point it held among the candidates, its face's corner
 /// point (a snapped edge), or none: the guard only takes away.
-bool only_takes_away(const PointSlots& accepted, const SharpPoints& candidates,
-                     const Connectivity& c) {
+[[maybe_unused]] bool only_takes_away(const PointSlots& accepted, const SharpPoints& candidates,
+                                      const Connectivity& c) {
     for (Index h = 0; h < accepted.edge_point.size(); ++h) {
         const Index id = accepted.edge_point[h];
         if (id == kNoIndex || id == candidates.slots.edge_point[h]) continue;

@@ -45,6 +45,7 @@ public:
             execute(tokenize(strip_comments(text)));
         }
         if (in.bad()) throw ReadError(source_, "read failed");
+        path_.source = source_;
         return std::move(path_);
     }
 

@@ -50,6 +50,7 @@ struct GcodeOptions {
 /// The moves of a program, in order.
 struct ToolPath {
     std::vector<Move> moves;
+    std::string source;  ///< the program's name in errors (parse_gcode's `source`)
 };
 
 /// Parses a program from a stream; `source` names it in errors.

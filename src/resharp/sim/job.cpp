@@ -22,7 +22,8 @@ public:
     explicit JobReader(const std::string& source) : source_(source) {}
 
     Job read(const json& root, const std::string& folder) const {
-        expect_keys(root, "", {"stock", "pitch", "program", "start", "tools"});
+        expect_keys(root, "",
+                    {"stock", "pitch", "program", "start", "tools", "mesher", "seam_duplicates"});
         Job job;
         const json& stock = member(root, "", "stock");
         expect_keys(stock, "stock", {"min", "max"});
@@ -44,6 +45,7 @@ public:
         const json& tools = member(root, "", "tools");
         if (!tools.is_array() || tools.empty()) bad("tools", "must be a non-empty array");
         for (std::size_t i = 0; i < tools.size(); ++i) read_tool(tools[i], i, job);
+        read_meshing(root, job.meshing);
         return job;
     }
 
@@ -85,9 +87,30 @@ private:
         return Vec3(number(value[0], key), number(value[1], key), number(value[2], key));
     }
 
+    void read_meshing(const json& root, MeshingOptions& meshing) const {
+        if (root.contains("mesher")) {
+            const json& name = root["mesher"];
+            const auto mesher =
+                name.is_string() ? mesher_from_string(name.get<std::string>()) : std::nullopt;
+            if (!mesher)
+                bad("mesher", "must be \"mc\", \"bisect\", \"midpoint\" or \"surface-nets\"");
+            meshing.mesher = *mesher;
+        }
+        if (root.contains("seam_duplicates")) {
+            const json& seams = root["seam_duplicates"];
+            if (!seams.is_number_integer() || seams.get<long long>() < 0 ||
+                seams.get<long long>() > 100000) {
+                bad("seam_duplicates", "must be an integer in 0..100000");
+            }
+            meshing.seam_duplicates = seams.get<int>();
+        }
+    }
+
     void read_tool(const json& entry, std::size_t index, Job& job) const {
         const std::string where = "tools[" + std::to_string(index) + "]";
-        expect_keys(entry, where, {"number", "type", "diameter", "corner_radius", "flute_length"});
+        expect_keys(entry, where,
+                    {"number", "type", "diameter", "corner_radius", "flute_length", "tip_angle",
+                     "tip_diameter"});
         const json& number_value = member(entry, where, "number");
         if (!number_value.is_number_integer() || number_value.get<long long>() < 1) {
             bad(where + ".number", "must be a positive integer");
@@ -102,16 +125,37 @@ private:
             shape = ToolShape::BallEnd;
         } else if (name == "bullnose") {
             shape = ToolShape::BullNose;
+        } else if (name == "vbit") {
+            shape = ToolShape::Cone;
         } else {
-            bad(where + ".type", "must be \"flat\", \"ball\" or \"bullnose\"");
+            bad(where + ".type", "must be \"flat\", \"ball\", \"bullnose\" or \"vbit\"");
         }
-        const double corner = entry.contains("corner_radius")
-                                  ? number(entry["corner_radius"], where + ".corner_radius")
-                                  : 0.0;
+        const auto optional = [&](const char* key) {
+            return entry.contains(key) ? number(entry[key], where + "." + key) : 0.0;
+        };
+        // Keys of the other family are refused rather than ignored.
+        for (const char* key : {"tip_angle", "tip_diameter", "corner_radius"}) {
+            const bool for_cones = std::string(key) != "corner_radius";
+            if (entry.contains(key) && for_cones != (shape == ToolShape::Cone)) {
+                bad(where + "." + key, std::string("does not apply to a \"") + name + "\" tool");
+            }
+        }
+        if (shape == ToolShape::Cone) {
+            const double angle = number(member(entry, where, "tip_angle"), where + ".tip_angle");
+            if (!(angle > 0.0 && angle < 180.0)) {
+                bad(where + ".tip_angle", "must lie strictly between 0 and 180 degrees");
+            }
+            if (optional("tip_diameter") < 0.0)
+                bad(where + ".tip_diameter", "must not be negative");
+        }
         try {
-            const Tool tool = Tool::make(
-                shape, positive(member(entry, where, "diameter"), where + ".diameter"), corner,
-                positive(member(entry, where, "flute_length"), where + ".flute_length"));
+            const double diameter = positive(member(entry, where, "diameter"), where + ".diameter");
+            const double flute =
+                positive(member(entry, where, "flute_length"), where + ".flute_length");
+            const Tool tool = shape == ToolShape::Cone
+                                  ? Tool::make_cone(diameter, optional("tip_angle"),
+                                                    optional("tip_diameter"), flute)
+                                  : Tool::make(shape, diameter, optional("corner_radius"), flute);
             if (!job.tools.emplace(number_of_tool, tool).second) {
                 bad(where + ".number",
                     "tool " + std::to_string(number_of_tool) + " is listed twice");

@@ -71,8 +71,9 @@ Simulation simulate(const Box3& stock, const std::map<int, Tool>& tools, const T
         if (move.tool == 0) continue;
         const auto tool = tools.find(move.tool);
         if (tool == tools.end()) {
-            throw InvalidInput("G-code line " + std::to_string(move.line) + " uses tool T" +
-                               std::to_string(move.tool) + ", which the tool table lacks");
+            throw InvalidInput(path.source + ": line " + std::to_string(move.line) +
+                               ": uses tool T" + std::to_string(move.tool) +
+                               ", which the tool table lacks");
         }
         bool cuts = false;
         for (const ToolMotion& motion : motions_of(move, options.helix_tolerance)) {

@@ -37,7 +37,7 @@ struct Simulation {
 /// Mills `stock` (faces with surface ids 0..5: -x, +x, -y, +y, -z, +z) with the moves of `path`:
 /// every move with a tool loaded, rapids included, removes the volume its tool sweeps (surface
 /// ids tool_surface_id(move index, part)). `on_progress` (optional) receives the fraction done.
-/// \throws InvalidInput if a move uses a tool number the table lacks (naming the G-code line),
+/// \throws InvalidInput if a move uses a tool number the table lacks ("SOURCE: line N: ..."),
 /// or the pitch or stock is invalid or the grid would exceed 2^31 nodes.
 Simulation simulate(const Box3& stock, const std::map<int, Tool>& tools, const ToolPath& path,
                     const SimulationOptions& options = {},

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "resharp/core/errors.h"
+#include "resharp/sim/cone_ramp.h"
 
 namespace resharp::sim {
 namespace {
@@ -248,6 +249,7 @@ SweptVolume::SweptVolume(const Tool& tool, const ToolMotion& motion, std::size_t
     } else {
         method_ = tool.shape == ToolShape::FlatEnd   ? Method::FlatRamp
                   : tool.shape == ToolShape::BallEnd ? Method::BallRamp
+                  : tool.shape == ToolShape::Cone    ? Method::ConeRamp
                                                      : Method::SampledRamp;
     }
     const Vec3 lo = motion.start.cwiseMin(motion.end), hi = motion.start.cwiseMax(motion.end);
@@ -270,6 +272,10 @@ Crossing SweptVolume::crossing(const Vec3& p, const Eigen::Vector2d& nearest,
 void SweptVolume::intersect(const Ray& ray, std::vector<Interval>& out) const {
     if (method_ == Method::SampledRamp) {
         intersect_static_copies(ray, out);
+    } else if (method_ == Method::ConeRamp) {
+        if (const auto cut = cut_cone_ramp(tool_, motion_.start, motion_.end, ray, move_)) {
+            out.push_back(*cut);
+        }
     } else if (ray.axis == 2) {
         intersect_vertical(ray, out);
     } else {

@@ -7,7 +7,8 @@
 ///   tool's disk at that height swept along the path (a stadium or an annular sector);
 /// - plunges (vertical lines): exact for every tool;
 /// - ramps (lines moving in both XY and Z): exact for flat end (including the surface the
-///   bottom rim sweeps) and ball end (a capsule around the centre path plus the shank);
+///   bottom rim sweeps), ball end (a capsule around the centre path plus the shank) and conical
+///   mills (cone_ramp.h);
 ///   bull-nose is the union of copies of the tool every `bullnose_step` along the ramp: the
 ///   smooth underside is off by about step² / (8 rc), the sharp rim at the flute top (which
 ///   should stay above the stock) by up to a step;
@@ -49,7 +50,7 @@ public:
     void intersect(const Ray& ray, std::vector<Interval>& out) const override;
 
 private:
-    enum class Method { Horizontal, Plunge, FlatRamp, BallRamp, SampledRamp };
+    enum class Method { Horizontal, Plunge, FlatRamp, BallRamp, ConeRamp, SampledRamp };
 
     void intersect_vertical(const Ray& ray, std::vector<Interval>& out) const;
     void intersect_horizontal(const Ray& ray, std::vector<Interval>& out) const;

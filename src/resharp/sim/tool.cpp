@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "resharp/core/errors.h"
 
@@ -30,6 +31,8 @@ Tool Tool::make(ToolShape shape, double diameter, double corner_radius, double f
             }
             t.corner_radius = corner_radius;
             break;
+        case ToolShape::Cone:
+            throw InvalidInput("a conical tool is made by Tool::make_cone");
     }
     if (t.flute_length < t.corner_radius) {
         throw InvalidInput("tool flute length is shorter than its corner radius");
@@ -37,7 +40,50 @@ Tool Tool::make(ToolShape shape, double diameter, double corner_radius, double f
     return t;
 }
 
+Tool Tool::make_cone(double diameter, double tip_angle_deg, double tip_diameter,
+                     double flute_length) {
+    if (!(tip_angle_deg > 0.0 && tip_angle_deg < 180.0)) {
+        throw InvalidInput("tip angle must lie strictly between 0 and 180 degrees");
+    }
+    if (!std::isfinite(diameter) || !(diameter > 0.0)) {
+        throw InvalidInput("tool diameter must be positive");
+    }
+    if (!std::isfinite(flute_length) || !(flute_length > 0.0)) {
+        throw InvalidInput("tool flute length must be positive");
+    }
+    if (!std::isfinite(tip_diameter) || !(tip_diameter >= 0.0 && tip_diameter < diameter)) {
+        throw InvalidInput("tip diameter must lie in [0, diameter)");
+    }
+    Tool t;
+    t.shape = ToolShape::Cone;
+    t.radius = diameter / 2;
+    t.flute_length = flute_length;
+    t.half_angle = tip_angle_deg / 2 * std::numbers::pi / 180;
+    t.tip_radius = tip_diameter / 2;
+    if (t.flute_length < t.cone_height()) {
+        throw InvalidInput("tool flute length is shorter than its cone");
+    }
+    return t;
+}
+
+double Tool::cone_height() const {
+    return shape == ToolShape::Cone ? (radius - tip_radius) / std::tan(half_angle) : 0.0;
+}
+
+namespace {
+
+/// The cone's outward profile normal (cos β, -sin β) at r = value.
+ProfilePoint on_cone(const Tool& tool, double value) {
+    return {value, std::cos(tool.half_angle), -std::sin(tool.half_angle), ToolPart::Cone};
+}
+
+}  // namespace
+
 ProfilePoint bottom_at(const Tool& tool, double r) {
+    if (tool.shape == ToolShape::Cone) {
+        if (r <= tool.tip_radius) return {0.0, 0.0, -1.0, ToolPart::Bottom};
+        return on_cone(tool, (r - tool.tip_radius) / std::tan(tool.half_angle));
+    }
     const double core = tool.radius - tool.corner_radius;
     if (r <= core) return {0.0, 0.0, -1.0, ToolPart::Bottom};
     const double rc = tool.corner_radius;
@@ -47,6 +93,10 @@ ProfilePoint bottom_at(const Tool& tool, double r) {
 }
 
 ProfilePoint radius_at(const Tool& tool, double z) {
+    if (tool.shape == ToolShape::Cone) {
+        if (z >= tool.cone_height()) return {tool.radius, 1.0, 0.0, ToolPart::Side};
+        return on_cone(tool, tool.tip_radius + z * std::tan(tool.half_angle));
+    }
     const double rc = tool.corner_radius;
     if (z >= rc) return {tool.radius, 1.0, 0.0, ToolPart::Side};
     const double below = rc - z;  // > 0
@@ -62,6 +112,8 @@ const char* to_string(ToolShape shape) {
             return "ball";
         case ToolShape::BullNose:
             return "bullnose";
+        case ToolShape::Cone:
+            return "vbit";
     }
     return "?";
 }

@@ -1,5 +1,7 @@
 #include "resharp/io/detail/mesh_checks.h"
 
+#include <utility>
+
 #include "resharp/core/errors.h"
 
 namespace resharp::io::detail {
@@ -36,14 +38,21 @@ std::string find_bad_attributes(const Mesh& mesh, const MeshAttributes& attribut
     for (std::string problem :
          {count_mismatch("vertex_normals", attributes.vertex_normals.size(), v, "vertices"),
           count_mismatch("vertex_surfaces", attributes.vertex_surfaces.size(), v, "vertices"),
+          count_mismatch("vertex_surface_points", attributes.vertex_surface_points.size(), v,
+                         "vertices"),
           count_mismatch("vertex_colors", attributes.vertex_colors.size(), v, "vertices"),
           count_mismatch("face_colors", attributes.face_colors.size(), mesh.face_count(),
                          "faces")}) {
         if (!problem.empty()) return problem;
     }
-    for (std::size_t i = 0; i < attributes.vertex_normals.size(); ++i) {
-        if (!attributes.vertex_normals[i].allFinite()) {
-            return "normal of vertex " + std::to_string(i) + " is NaN or infinite";
+    for (const auto& [values, what] :
+         {std::pair{attributes.vertex_normals, "normal"},
+          std::pair{attributes.vertex_surface_points, "surface point"}}) {
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            if (!values[i].allFinite()) {
+                return std::string(what) + " of vertex " + std::to_string(i) +
+                       " is NaN or infinite";
+            }
         }
     }
     return {};
