@@ -15,6 +15,7 @@ WriteError (OSErrors, with the file in `path`) and ParseError (a malformed file:
 
 import inspect as _inspect
 import json as _json
+import textwrap as _textwrap
 from dataclasses import dataclass as _dataclass
 from typing import Optional as _Optional
 
@@ -78,7 +79,8 @@ def _keyword_doc(name, entry):
     kind = entry["type"]
     if entry["choices"] is not None:
         kind = " | ".join(repr(choice) for choice in entry["choices"])
-    return f"    {name} ({kind}, default {entry['default']!r}): {entry['help']}."
+    return _textwrap.fill(f"{name} ({kind}, default {entry['default']!r}): {entry['help']}.",
+                          width=96, initial_indent="    ", subsequent_indent="        ")
 
 
 restore.__signature__ = _inspect.Signature(
