@@ -80,7 +80,8 @@ def _keyword_doc(name, entry):
     if entry["choices"] is not None:
         kind = " | ".join(repr(choice) for choice in entry["choices"])
     return _textwrap.fill(f"{name} ({kind}, default {entry['default']!r}): {entry['help']}.",
-                          width=96, initial_indent="    ", subsequent_indent="        ")
+                          width=96, initial_indent="    ", subsequent_indent="        ",
+                          break_on_hyphens=False, break_long_words=False)
 
 
 restore.__signature__ = _inspect.Signature(
