@@ -1,5 +1,5 @@
 #pragma once
-// The benchmark parts of examples/<part>/ (design.md §4), simulated once per process so that
+// The benchmark parts of examples/<part>/ (docs/design.md §4), simulated once per process so that
 // benchmarks time only what they measure. Run from the repository root, or set
 // RESHARP_EXAMPLES=<folder>.
 

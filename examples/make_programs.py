@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the four benchmark parts of `resharp simulate` (design.md section 4):
+"""Writes the four benchmark parts of `resharp simulate` (docs/design.md section 4):
 
   mech      2.5D, flat end mills only: a step, a rounded pocket, a round pocket
             cut with arcs, a slot and drilled holes (Type 1 edges only)

@@ -13,7 +13,7 @@ if [[ "${1:-}" == "--sanitize" ]]; then
     export BUILD_DIR=build-asan BUILD_TYPE=Debug
     export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1
     bash scripts/build.sh -DRESHARP_SANITIZE=ON -DRESHARP_EXPENSIVE_ASSERTS=ON \
-        -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" -DRESHARP_BUILD_BENCHMARKS=OFF
+        -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" -DRESHARP_BUILD_BENCHMARKS=OFF -DRESHARP_BUILD_VIEWER=OFF
 else
     export BUILD_DIR=build
     bash scripts/build.sh

@@ -1,5 +1,6 @@
 // `resharp evaluate`: scores a restored mesh against the simulator's oracle and the exact
-// surface (design.md §5, docs/results.md). A thin layer over resharp::eval.
+// surface (docs/design.md §5, docs/results.md): ideal points on the exact junction of the job's
+// surfaces, and the first-order (eq. 5.2) ones beside them. A thin layer over resharp::eval.
 
 #include <iostream>
 #include <map>
@@ -13,6 +14,7 @@
 #include "resharp/core/stage_timer.h"
 #include "resharp/eval/detection.h"
 #include "resharp/eval/evaluation_files.h"
+#include "resharp/eval/exact_junctions.h"
 #include "resharp/eval/ideal_points.h"
 #include "resharp/eval/miss_causes.h"
 #include "resharp/eval/oracle_restoration.h"
@@ -41,6 +43,7 @@ struct EvaluateArguments {
     double sample_pitch = 0.25;  // exact samples: ray grid pitch in h
     double grid_phase = sim::SimulationOptions{}.grid_phase;
     eval::IdealPointOptions ideal;
+    eval::ExactJunctionOptions junctions;
     eval::RestorationOptions restoration;
     eval::SurfaceMetricsOptions surface;
     bool quiet = false;
@@ -95,6 +98,26 @@ json to_json(const eval::MissCauses& c) {
     return {{"edges", edges}, {"corners", corners}};
 }
 
+json to_json(const eval::RestorationScore& s) {
+    return {{"edges", s.ideal_edges},
+            {"corners", s.ideal_corners},
+            {"restored_edges", s.restored_edges},
+            {"restored_corners", s.restored_corners},
+            {"beyond_chord", s.beyond_chord},
+            {"restored_beyond_chord", s.restored_beyond_chord},
+            {"new_vertices", s.new_vertices}};
+}
+
+/// Per JunctionStatus but Exact: the ideal points left out of the exact-junction rate.
+json counted_apart(const eval::ExactIdealPoints& ideal) {
+    json apart;
+    for (std::size_t k = 1; k < eval::kJunctionStatusCount; ++k) {
+        const std::string name(eval::junction_status_name(static_cast<eval::JunctionStatus>(k)));
+        apart[name] = {{"edges", ideal.edges[k]}, {"corners", ideal.corners[k]}};
+    }
+    return apart;
+}
+
 /// The restored mesh and what the method detected, from restore() here or from files.
 struct Restored {
     Mesh mesh;
@@ -133,8 +156,8 @@ Restored obtain_restored(const EvaluateArguments& args, const Mesh& input,
     return {std::move(result.mesh), std::move(result.segmentation), "restore() in process"};
 }
 
-sim::Simulation simulate_fine(const sim::Job& job, const EvaluateArguments& args) {
-    const sim::ToolPath path = sim::read_gcode(job.program, {.start_position = job.start_position});
+sim::Simulation simulate_fine(const sim::Job& job, const sim::ToolPath& path,
+                              const EvaluateArguments& args) {
     sim::SimulationOptions options;
     options.pitch = job.pitch * args.sample_pitch;
     options.grid_phase = args.grid_phase;
@@ -153,33 +176,56 @@ void run_evaluate(EvaluateArguments args) {
     const Mesh& output = restored.mesh;
     eval::check_output_extends_input(input, output);
 
+    const sim::ToolPath path = sim::read_gcode(job.program, {.start_position = job.start_position});
     const StageTimer sampling;
-    const sim::Simulation fine = simulate_fine(job, args);
+    const sim::Simulation fine = simulate_fine(job, path, args);
     const eval::SurfaceSamples exact = eval::sample_exact_surface(fine.grid);
     const double sampling_seconds = std::chrono::duration<double>(sampling.elapsed()).count();
 
-    const auto ideal = eval::find_ideal_points(input, oracle, args.ideal);
+    const StageTimer junctions;
+    const auto first_order = eval::find_ideal_points(input, oracle, args.ideal);
+    const eval::MachinedSolid solid(job.stock, job.tools, path, {.pitch = h});
+    args.junctions.solver.pitch = h;
+    args.junctions.smooth_angle_deg = args.ideal.sharp_angle_deg;
+    const eval::ExactIdealPoints ideal =
+        eval::find_exact_ideal_points(input, oracle, first_order, solid, args.junctions);
+    const double junction_seconds = std::chrono::duration<double>(junctions.elapsed()).count();
+
+    eval::RestorationOptions on_junction = args.restoration;
+    on_junction.count_input_vertices = true;
     const eval::RestorationScore score =
-        eval::score_restoration(input, output, ideal, exact, args.restoration);
-    const eval::MissCauses causes =
-        eval::find_miss_causes(input, output, ideal, score.ideal_distance,
-                               args.restoration.tolerance * h, restored.segmentation);
+        eval::score_restoration(input, output, ideal.points, exact, on_junction);
+    const eval::RestorationScore first =
+        eval::score_restoration(input, output, first_order, exact, args.restoration);
+    const double tau = args.restoration.tolerance * h;
 
     json j;
     j["restoration_rate"] = score.rate;
+    j["restoration_rate_first_order"] = first.rate;
+    // The input's own rate on the exact junction: the points an input vertex already restores.
+    j["restoration_rate_input"] = score.ideal_edges + score.ideal_corners == 0
+                                      ? 1.0
+                                      : double(score.restored_by_input_vertices) /
+                                            double(score.ideal_edges + score.ideal_corners);
     j["restoration_rate_edges"] = score.rate_edges;
     j["restoration_rate_corners"] = score.rate_corners;
     j["restoration_rate_within_reach"] = score.rate_within_reach;
     j["false_insertions"] = score.false_insertions;
     j["max_new_vertex_distance"] = score.max_new_vertex_distance;
-    j["ideal_points"] = {{"edges", score.ideal_edges},
-                         {"corners", score.ideal_corners},
-                         {"restored_edges", score.restored_edges},
-                         {"restored_corners", score.restored_corners},
-                         {"beyond_chord", score.beyond_chord},
-                         {"restored_beyond_chord", score.restored_beyond_chord},
-                         {"new_vertices", score.new_vertices}};
-    j["miss_causes"] = to_json(causes);
+    j["ideal_points"] = to_json(score);
+    j["ideal_points"]["restored_by_input_vertices"] = score.restored_by_input_vertices;
+    j["ideal_points"]["counted_apart"] = counted_apart(ideal);
+    j["miss_causes"] = to_json(eval::find_miss_causes(
+        input, output, ideal.points, score.ideal_distance, tau, restored.segmentation));
+    j["first_order"] = {{"restoration_rate", first.rate},
+                        {"restoration_rate_edges", first.rate_edges},
+                        {"restoration_rate_corners", first.rate_corners},
+                        {"restoration_rate_within_reach", first.rate_within_reach},
+                        {"false_insertions", first.false_insertions},
+                        {"ideal_points", to_json(first)},
+                        {"miss_causes", to_json(eval::find_miss_causes(input, output, first_order,
+                                                                       first.ideal_distance, tau,
+                                                                       restored.segmentation))}};
     j["detection_source"] = restored.detection_source;
     j["detection_precision"] = nullptr;
     j["detection_recall"] = nullptr;
@@ -220,6 +266,7 @@ void run_evaluate(EvaluateArguments args) {
                      {"edge_f1_threshold_h", args.surface.edge_f1_threshold},
                      {"lengths", "mm"}};
     j["time_seconds"] = {{"exact_sampling", sampling_seconds},
+                         {"exact_junctions", junction_seconds},
                          {"total", std::chrono::duration<double>(total.elapsed()).count()}};
 
     if (!args.json.empty()) {
@@ -228,13 +275,16 @@ void run_evaluate(EvaluateArguments args) {
     }
     if (args.quiet) return;
     std::ostringstream s;
-    s << "restoration rate " << score.rate * 100 << " % (edges " << score.restored_edges << "/"
-      << score.ideal_edges << ", corners " << score.restored_corners << "/" << score.ideal_corners
-      << "), " << score.rate_within_reach * 100 << " % of the "
+    const std::size_t apart = first.ideal_edges + first.ideal_corners - ideal.points.size();
+    s << "restoration rate " << score.rate * 100 << " % on the exact junction (edges "
+      << score.restored_edges << "/" << score.ideal_edges << ", corners " << score.restored_corners
+      << "/" << score.ideal_corners << "; " << apart << " counted apart), "
+      << score.rate_within_reach * 100 << " % of the "
       << score.ideal_edges + score.ideal_corners - score.beyond_chord
-      << " points within reach of an edge split, false insertions " << score.false_insertions
-      << ", flipped " << j["flipped_triangles"] << ", self-intersections "
-      << valid_out.self_intersections << " (input " << valid_in.self_intersections << ")\n";
+      << " points within reach of an edge split; restoration rate first order (eq. 5.2) "
+      << first.rate * 100 << " %; false insertions " << score.false_insertions << ", flipped "
+      << j["flipped_triangles"] << ", self-intersections " << valid_out.self_intersections
+      << " (input " << valid_in.self_intersections << ")\n";
     std::cerr << s.str();
 }
 

@@ -37,7 +37,9 @@ TEST_F(RestoreCli, RestoresTheExampleWithReportSegmentsAndSummary) {
 }
 
 // The split on the oracle's bands with exact normals (the ceiling of an edge split): the bracket
-// is all planes, so every crossing edge gets its ideal point and nothing folds.
+// is planes and cylinders, so every crossing edge gets its first-order (eq. 5.2) ideal point and
+// nothing folds; on the exact junction the points beside its holes' and pockets' walls fall
+// short, and nothing is counted apart but the junctions under the slot's floor.
 TEST_F(RestoreCli, EvaluatesTheSplitCeilingOfTheSimulatedBracket) {
     const std::string job =
         quoted(fs::path(RESHARP_SOURCE_DIR) / "examples" / "bracket" / "job.json");
@@ -53,8 +55,18 @@ TEST_F(RestoreCli, EvaluatesTheSplitCeilingOfTheSimulatedBracket) {
     EXPECT_EQ(r["detection_precision"], 1.0);
     EXPECT_EQ(r["detection_recall"], 1.0);
     EXPECT_GT(r["ideal_points"]["edges"].get<int>(), 1000);
-    EXPECT_EQ(r["restoration_rate_edges"], 1.0);
-    EXPECT_EQ(r["false_insertions"], 0);
+    EXPECT_EQ(r["first_order"]["restoration_rate_edges"], 1.0);
+    EXPECT_EQ(r["restoration_rate_first_order"], r["first_order"]["restoration_rate"]);
+    EXPECT_GT(r["restoration_rate"].get<double>(), 0.98);
+    EXPECT_LT(r["restoration_rate"].get<double>(), 1.0);
+    const auto& apart = r["ideal_points"]["counted_apart"];
+    EXPECT_EQ(apart["sampled_surface"]["edges"], 0);
+    EXPECT_EQ(apart["unsolved"]["edges"], 0);
+    EXPECT_LE(apart["not_bounding"]["edges"].get<int>(), 4);
+    EXPECT_NE(run.stderr_text.find("on the exact junction"), std::string::npos) << run.stderr_text;
+    // On the exact junction only the points of junctions counted apart have no ideal point.
+    EXPECT_EQ(r["first_order"]["false_insertions"], 0);
+    EXPECT_LE(r["false_insertions"], r["ideal_points"]["counted_apart"]["not_bounding"]["edges"]);
     EXPECT_EQ(r["flipped_triangles"], 0);
     EXPECT_EQ(r["self_intersections"], 0);
 

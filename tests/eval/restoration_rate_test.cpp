@@ -75,6 +75,26 @@ TEST(RestorationRate, BoundaryPointsAreLeftOut) {
     EXPECT_TRUE(std::isnan(r.ideal_distance[2]));
 }
 
+// On the exact junction an input vertex may already lie on the sharp edge: with
+// count_input_vertices it restores the point, and is counted as having done so.
+TEST(RestorationRate, InputVerticesRestoreWhenCounted) {
+    Scene s;
+    s.ideal[2].position = Vec3(0.02, 1, 0);  // C: 0.02 from input vertex 2, no new vertex near
+    const RestorationOptions plain{.pitch = 1.0, .tolerance = 0.05};
+    RestorationOptions counted = plain;
+    counted.count_input_vertices = true;
+    const RestorationScore without =
+        score_restoration(s.input, s.output, s.ideal, plane_samples(), plain);
+    const RestorationScore with =
+        score_restoration(s.input, s.output, s.ideal, plane_samples(), counted);
+    EXPECT_EQ(without.restored_edges, 1u);
+    EXPECT_EQ(without.restored_by_input_vertices, 0u);
+    EXPECT_EQ(with.restored_edges, 2u);
+    EXPECT_EQ(with.restored_by_input_vertices, 1u);
+    EXPECT_NEAR(with.ideal_distance[2], 0.02, 1e-12);
+    EXPECT_EQ(with.false_insertions, without.false_insertions);  // new vertices only
+}
+
 TEST(RestorationRate, RefusesAnOutputThatDoesNotStartWithTheInput) {
     Scene s;
     std::swap(s.output.positions[0], s.output.positions[1]);

@@ -1,4 +1,4 @@
-// Damaged meshes (design.md §6): restore() finishes, counts each defect, leaves what it cannot
+// Damaged meshes (docs/design.md §6): restore() finishes, counts each defect, leaves what it cannot
 // treat as it was, and restores the sharp edges elsewhere.
 
 #include <gtest/gtest.h>

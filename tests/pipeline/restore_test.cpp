@@ -135,7 +135,7 @@ TEST(Restore, DrilledPlateRestoresTheCurvedHoleEdges) {
     const test::SampledShape shape = test::sampled_drilled_plate();
     const Outcome o = restore_shape(shape);
     EXPECT_EQ(o.result.report.feature_patches, 7u);
-    const double tau = 0.05 * shape.pitch;  // design.md §5
+    const double tau = 0.05 * shape.pitch;  // docs/design.md §5
     const std::size_t edges = o.count(eval::IdealKind::Edge);
     EXPECT_GE(o.restored_within(tau, eval::IdealKind::Edge), edges * 98 / 100);
     EXPECT_EQ(o.restored_within(1e-6, eval::IdealKind::Corner), 8u);

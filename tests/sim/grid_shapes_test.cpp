@@ -50,12 +50,13 @@ TEST_P(GridShapeTest, FinerPitchStaysClean) {
     expect_clean_closed_outward(s.mesh);
 }
 
-INSTANTIATE_TEST_SUITE_P(Shapes, GridShapeTest,
-                         ::testing::Values(NamedShape{"box", sampled_box},
-                                           NamedShape{"l_block", sampled_l_block},
-                                           NamedShape{"drilled_plate", sampled_drilled_plate},
-                                           NamedShape{"rotated_box", sampled_rotated_box}),
-                         [](const auto& param_info) { return std::string(param_info.param.name); });
+INSTANTIATE_TEST_SUITE_P(
+    Shapes, GridShapeTest,
+    ::testing::Values(NamedShape{"box", sampled_box}, NamedShape{"l_block", sampled_l_block},
+                      NamedShape{"drilled_plate",
+                                 [](double h) { return sampled_drilled_plate(h); }},
+                      NamedShape{"rotated_box", sampled_rotated_box}),
+    [](const auto& param_info) { return std::string(param_info.param.name); });
 
 TEST(GridShapes, DistanceHelpersAreExactAtKnownPoints) {
     const SampledShape plate = sampled_drilled_plate();

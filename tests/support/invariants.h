@@ -1,5 +1,5 @@
 #pragma once
-/// Reusable checks of the output invariants of restore() (design.md §3). Each records gtest
+/// Reusable checks of the output invariants of restore() (docs/design.md §3). Each records gtest
 /// failures with the offending element, so one call covers a whole mesh.
 
 #include <vector>

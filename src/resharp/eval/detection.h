@@ -1,5 +1,5 @@
 #pragma once
-/// Detection scores (design.md §5): the method's edge and corner triangles against the
+/// Detection scores (docs/design.md §5): the method's edge and corner triangles against the
 /// triangles the oracle says hold a crossing edge or are corner triangles.
 
 #include <cstddef>

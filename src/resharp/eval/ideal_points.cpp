@@ -25,14 +25,19 @@ bool lies_over_face(const Mesh& mesh, Index f, const Vec3& p) {
            (b - a).cross(p - a).dot(n) >= 0.0;
 }
 
+/// True when p lies over neither face of half-edge h's edge.
+bool over_neither_face(const Mesh& mesh, const Connectivity& c, Index h, const Vec3& p) {
+    return !lies_over_face(mesh, face_of(h), p) &&
+           (c.twin[h] == kNoIndex || !lies_over_face(mesh, face_of(c.twin[h]), p));
+}
+
 /// See IdealPoint::beyond_chord; m is the ideal point of half-edge h, from u to v.
 bool beyond_chord(const Mesh& mesh, const Connectivity& c, const Oracle& o, Index h, Index u,
                   Index v, const Vec3& m) {
     if (passes_flip_test(mesh.positions[u], o.normals[u], mesh.positions[v], o.normals[v])) {
         return false;
     }
-    return !lies_over_face(mesh, face_of(h), m) &&
-           (c.twin[h] == kNoIndex || !lies_over_face(mesh, face_of(c.twin[h]), m));
+    return over_neither_face(mesh, c, h, m);
 }
 
 }  // namespace
@@ -81,6 +86,16 @@ std::vector<IdealPoint> find_ideal_points(const Mesh& mesh, const Oracle& oracle
         if (m) points.push_back({*m, IdealKind::Corner, f, {t[0], t[1], t[2]}});
     }
     return points;
+}
+
+bool is_beyond_chord(const Mesh& mesh, const Connectivity& c, const Oracle& oracle,
+                     const IdealPoint& point, const Vec3& p) {
+    const Triangle& t = mesh.triangles[point.face];
+    const Index u = point.vertices[0], v = point.vertices[1];
+    for (Index k = 0; k < 3; ++k) {
+        if (t[k] == u) return beyond_chord(mesh, c, oracle, 3 * point.face + k, u, v, p);
+    }
+    throw InvalidInput("an ideal edge point whose first vertex is not on its face");
 }
 
 std::vector<double> nearest_distances(std::span<const IdealPoint> ideal,

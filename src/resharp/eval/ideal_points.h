@@ -1,11 +1,12 @@
 #pragma once
-/// Ground truth from the simulator's oracle (design.md §5): where the sharp edges and corners
+/// Ground truth from the simulator's oracle (docs/design.md §5): where the sharp edges and corners
 /// are, and how many of them a restored mesh put back.
 
 #include <cstdint>
 #include <span>
 #include <vector>
 
+#include "resharp/mesh/connectivity.h"
 #include "resharp/mesh/mesh.h"
 
 namespace resharp::eval {
@@ -58,6 +59,12 @@ inline bool is_sharp_junction(const Oracle& oracle, Index u, Index v, double min
 /// equations have no single solution (parallel normals) are left out.
 std::vector<IdealPoint> find_ideal_points(const Mesh& mesh, const Oracle& oracle,
                                           const IdealPointOptions& options = {});
+
+/// IdealPoint::beyond_chord for `point` (an Edge ideal point of `mesh`, `c` its connectivity)
+/// placed at p instead: eq. 5.4 fails with the exact normals and p lies over neither face.
+/// \throws InvalidInput if point.vertices[0] is not a vertex of point.face.
+bool is_beyond_chord(const Mesh& mesh, const Connectivity& c, const Oracle& oracle,
+                     const IdealPoint& point, const Vec3& p);
 
 /// For each ideal point, the distance to the nearest of `candidates` (infinity if none within
 /// `search_radius`), found through a uniform grid with cells of search_radius.

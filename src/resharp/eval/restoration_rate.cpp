@@ -56,8 +56,11 @@ RestorationScore score_restoration(const Mesh& input, const Mesh& output,
     RestorationScore s;
     s.new_vertices = fresh.size();
 
-    // Ideal points to new vertices: the rate.
-    s.ideal_distance = nearest_distances(ideal, fresh, 4.0 * h);
+    // Ideal points to new vertices (or to every output vertex): the rate.
+    s.ideal_distance = nearest_distances(
+        ideal, options.count_input_vertices ? std::span(output.positions) : fresh, 4.0 * h);
+    std::vector<double> input_distance;
+    if (options.count_input_vertices) input_distance = nearest_distances(ideal, input.positions, h);
     std::vector<Vec3> counted;  // ideal points off the boundary, for false insertions
     for (std::size_t i = 0; i < ideal.size(); ++i) {
         const IdealPoint& p = ideal[i];
@@ -67,6 +70,7 @@ RestorationScore score_restoration(const Mesh& input, const Mesh& output,
         }
         counted.push_back(p.position);
         const bool restored = s.ideal_distance[i] <= tau;
+        s.restored_by_input_vertices += !input_distance.empty() && input_distance[i] <= tau;
         if (p.kind == IdealKind::Edge) {
             ++s.ideal_edges;
             s.restored_edges += restored;

@@ -1,5 +1,5 @@
 #pragma once
-/// Surface error of a mesh against the exact surface (design.md §5): Chamfer and Hausdorff
+/// Surface error of a mesh against the exact surface (docs/design.md §5): Chamfer and Hausdorff
 /// distance, normal consistency, and on sharp features the Edge Chamfer Distance and Edge
 /// F-score of Neural Dual Contouring (Chen et al. 2022; their evaluation script
 /// eval_cd_nc_f1_ecd_ef1.py in github.com/czq142857/NDC).

@@ -1,5 +1,5 @@
 #pragma once
-/// Mesh validity of a restored mesh (design.md §5): manifold, closed, oriented, flipped and
+/// Mesh validity of a restored mesh (docs/design.md §5): manifold, closed, oriented, flipped and
 /// self-intersecting triangles, smallest angle.
 
 #include <cstddef>

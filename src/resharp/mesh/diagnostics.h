@@ -1,5 +1,5 @@
 #pragma once
-/// Counts of the defects the method cannot treat, found before any stage runs (design.md §6).
+/// Counts of the defects the method cannot treat, found before any stage runs (docs/design.md §6).
 
 #include <cstddef>
 #include <vector>

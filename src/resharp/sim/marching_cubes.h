@@ -1,6 +1,6 @@
 #pragma once
-/// Meshing a tri-dexel grid (design.md §4) on the grid whose cell edges lie on the dexel rays, in
-/// the four ways grid meshers place their vertices, so that one simulation gives the test input
+/// Meshing a tri-dexel grid (docs/design.md §4) on the grid whose cell edges lie on the dexel rays,
+/// in the four ways grid meshers place their vertices, so that one simulation gives the test input
 /// of each (docs/oracle.md):
 /// - `mc`: marching cubes, every vertex at the exact ray crossing on its cell edge, so it lies on
 ///   the simulated surface and carries that surface's exact normal and id (the oracle);

@@ -54,17 +54,12 @@ std::vector<ToolMotion> motions_of(const Move& move, double helix_tolerance) {
 
 }  // namespace
 
-Simulation simulate(const Box3& stock, const std::map<int, Tool>& tools, const ToolPath& path,
-                    const SimulationOptions& options,
-                    const std::function<void(double)>& on_progress) {
+std::vector<SweptVolume> swept_volumes(const Box3& stock, const std::map<int, Tool>& tools,
+                                       const ToolPath& path, const SimulationOptions& options,
+                                       SimulationStats* stats) {
     if (!(options.helix_tolerance > 0.0)) throw InvalidInput("helix tolerance must be positive");
-    const Vec3 anchor = stock.min().array() + options.grid_phase * options.pitch;
-    const GridSpec spec = grid_enclosing(stock, options.pitch, anchor);
-    const double nodes = static_cast<double>(spec.counts[0]) * spec.counts[1] * spec.counts[2];
-    if (nodes > 2147483647.0) throw InvalidInput("grid too fine: more than 2^31 nodes");
-
-    Simulation result;
-    result.stats.moves = path.moves.size();
+    SimulationStats counts;
+    counts.moves = path.moves.size();
     std::vector<SweptVolume> volumes;
     for (std::size_t i = 0; i < path.moves.size(); ++i) {
         const Move& move = path.moves[i];
@@ -82,9 +77,24 @@ Simulation simulate(const Box3& stock, const std::map<int, Tool>& tools, const T
             volumes.push_back(std::move(volume));
             cuts = true;
         }
-        result.stats.cutting_moves += cuts;
+        counts.cutting_moves += cuts;
     }
-    result.stats.swept_volumes = volumes.size();
+    counts.swept_volumes = volumes.size();
+    if (stats != nullptr) *stats = counts;
+    return volumes;
+}
+
+Simulation simulate(const Box3& stock, const std::map<int, Tool>& tools, const ToolPath& path,
+                    const SimulationOptions& options,
+                    const std::function<void(double)>& on_progress) {
+    const Vec3 anchor = stock.min().array() + options.grid_phase * options.pitch;
+    const GridSpec spec = grid_enclosing(stock, options.pitch, anchor);
+    const double nodes = static_cast<double>(spec.counts[0]) * spec.counts[1] * spec.counts[2];
+    if (nodes > 2147483647.0) throw InvalidInput("grid too fine: more than 2^31 nodes");
+
+    Simulation result;
+    const std::vector<SweptVolume> volumes =
+        swept_volumes(stock, tools, path, options, &result.stats);
 
     result.grid = sample_solid(spec, axis_box(stock, 0));
     std::vector<const Solid*> order;

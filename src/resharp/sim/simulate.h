@@ -1,9 +1,10 @@
 #pragma once
-/// Milling: a box stock minus the volume every move of a program sweeps (design.md §4).
+/// Milling: a box stock minus the volume every move of a program sweeps (docs/design.md §4).
 
 #include <cstddef>
 #include <functional>
 #include <map>
+#include <vector>
 
 #include "resharp/sim/gcode.h"
 #include "resharp/sim/sweep.h"
@@ -33,6 +34,14 @@ struct Simulation {
     DexelGrid grid;
     SimulationStats stats;
 };
+
+/// The volumes the moves of `path` sweep that reach `stock`, in program order: one per move with
+/// a tool loaded (rapids included), one per ramp of a helical arc. `stats` (optional) receives
+/// the counts.
+/// \throws InvalidInput if a move uses a tool number the table lacks (naming the G-code line).
+std::vector<SweptVolume> swept_volumes(const Box3& stock, const std::map<int, Tool>& tools,
+                                       const ToolPath& path, const SimulationOptions& options = {},
+                                       SimulationStats* stats = nullptr);
 
 /// Mills `stock` (faces with surface ids 0..5: -x, +x, -y, +y, -z, +z) with the moves of `path`:
 /// every move with a tool loaded, rapids included, removes the volume its tool sweeps (surface

@@ -257,9 +257,9 @@ SweptVolume::SweptVolume(const Tool& tool, const ToolMotion& motion, std::size_t
                    Vec3(hi.x() + rim, hi.y() + rim, hi.z() + tool.flute_length));
 }
 
-Eigen::Vector2d SweptVolume::nearest_on_path(const Eigen::Vector2d& p) const {
-    if (motion_.kind == ToolMotion::Kind::Arc) return arc_shape(motion_).nearest(p);
-    return nearest_on_segment<2>(p, motion_.start.head<2>(), motion_.end.head<2>());
+Eigen::Vector2d nearest_on_path(const ToolMotion& motion, const Eigen::Vector2d& p) {
+    if (motion.kind == ToolMotion::Kind::Arc) return arc_shape(motion).nearest(p);
+    return nearest_on_segment<2>(p, motion.start.head<2>(), motion.end.head<2>());
 }
 
 Crossing SweptVolume::crossing(const Vec3& p, const Eigen::Vector2d& nearest,
@@ -289,7 +289,7 @@ void SweptVolume::intersect_vertical(const Ray& ray, std::vector<Interval>& out)
     const Crossing top_plane_at = {0.0, Vec3::UnitZ(), tool_surface_id(move_, ToolPart::Top)};
     if (method_ == Method::Horizontal || method_ == Method::Plunge) {
         // The lowest the tool reaches on this line is where the path comes nearest.
-        const Vec2 q = nearest_on_path(xy);
+        const Vec2 q = nearest_on_path(motion_, xy);
         const double r = (xy - q).norm();
         const Vec2 g = unit_or_x(xy - q);
         if (r > tool_.radius || (r == tool_.radius && !boundary_is_inside(embed(g)))) return;
@@ -353,8 +353,8 @@ void SweptVolume::intersect_horizontal(const Ray& ray, std::vector<Interval>& ou
     const double flute = tool_.flute_length;
     const auto band_crossings = [&](const Range& r, const ProfilePoint& profile) {
         const Vec3 p0 = ray.point(r.t0), p1 = ray.point(r.t1);
-        return Interval{crossing(p0, nearest_on_path(p0.head<2>()), profile, r.t0),
-                        crossing(p1, nearest_on_path(p1.head<2>()), profile, r.t1)};
+        return Interval{crossing(p0, nearest_on_path(motion_, p0.head<2>()), profile, r.t0),
+                        crossing(p1, nearest_on_path(motion_, p1.head<2>()), profile, r.t1)};
     };
     if (method_ == Method::Horizontal) {
         const double height = z - motion_.start.z();

@@ -35,6 +35,10 @@ struct ToolMotion {
     double sweep = 0.0;  ///< Arc: signed angle swept, rad, positive counter-clockwise (G3)
 };
 
+/// The point of the motion's path in plan (XY) nearest `p`: on the segment between the ends'
+/// XY positions, or on the arc.
+Eigen::Vector2d nearest_on_path(const ToolMotion& motion, const Eigen::Vector2d& p);
+
 struct SweepOptions {
     double bullnose_step = 0.05;  ///< spacing of the tool copies sampling a bull-nose ramp, mm
 };
@@ -49,15 +53,26 @@ public:
     Box3 bounds() const override { return bounds_; }
     void intersect(const Ray& ray, std::vector<Interval>& out) const override;
 
-private:
-    enum class Method { Horizontal, Plunge, FlatRamp, BallRamp, ConeRamp, SampledRamp };
+    /// How the volume is intersected, which decides the shape of each part's surface.
+    enum class Method {
+        Horizontal,  ///< a horizontal line or arc: the tool at the start's height along the path
+        Plunge,      ///< Z only: the tool at the lower end, its top at the upper end
+        FlatRamp,    ///< flat end, XY and Z together
+        BallRamp,    ///< ball end, XY and Z together
+        ConeRamp,    ///< V-bit, XY and Z together (cone_ramp.h)
+        SampledRamp  ///< bull-nose, XY and Z together: copies every bullnose_step (not exact)
+    };
+    Method method() const { return method_; }
+    const Tool& tool() const { return tool_; }
+    const ToolMotion& motion() const { return motion_; }
+    std::size_t move() const { return move_; }
 
+private:
     void intersect_vertical(const Ray& ray, std::vector<Interval>& out) const;
     void intersect_horizontal(const Ray& ray, std::vector<Interval>& out) const;
     void intersect_static_copies(const Ray& ray, std::vector<Interval>& out) const;
     Crossing crossing(const Vec3& p, const Eigen::Vector2d& nearest, const ProfilePoint& profile,
                       double t) const;
-    Eigen::Vector2d nearest_on_path(const Eigen::Vector2d& p) const;
 
     Tool tool_;
     ToolMotion motion_;

@@ -1,5 +1,5 @@
 #pragma once
-/// The tri-dexel model (design.md §4): three families of grid rays, along x, y and z; each ray
+/// The tri-dexel model (docs/design.md §4): three families of grid rays, along x, y and z; each ray
 /// keeps the sorted solid intervals where it lies inside the workpiece, and every interval end
 /// remembers the exact parameter, the exact outward normal and the id of the surface there.
 ///
