@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cctype>
 #include <limits>
+#include <type_traits>
 #include <variant>
-#include <vector>
 
 #include "resharp/core/errors.h"
 #include "resharp/pipeline/option_table.h"
