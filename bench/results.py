@@ -43,6 +43,18 @@ CAUSES = ["beyond_chord", "no_feature_patch", "same_patch", "no_edge_vertex", "c
           "not_detected", "not_inserted", "placed_far"]
 
 
+# The section bench/cad_corpus.py writes into the page; kept when this script rewrites it.
+CAD_BEGIN = "<!-- cad-corpus: begin (bench/cad_corpus.py writes this section) -->"
+CAD_END = "<!-- cad-corpus: end -->"
+
+
+def cad_section(page):
+    """The CAD corpus section of `page` (text), or "" if it has none."""
+    if CAD_BEGIN not in page or CAD_END not in page:
+        return ""
+    return CAD_BEGIN + page.split(CAD_BEGIN, 1)[1].split(CAD_END, 1)[0] + CAD_END
+
+
 def run(cmd):
     print("+", " ".join(cmd), file=sys.stderr, flush=True)
     subprocess.run(cmd, check=True)
@@ -256,6 +268,11 @@ def main():
         quality=quality_table(results), times=time_table(results, "times"),
         times_paper=time_table(results, "times_paper"), causes=causes_table(results),
         causes_first=causes_table(results, first_order=True))
+    if os.path.exists(args.output):
+        with open(args.output) as f:
+            kept = cad_section(f.read())
+        if kept:
+            page = page.rstrip("\n") + "\n\n" + kept + "\n"
     with open(args.output, "w") as f:
         f.write(page)
     print(f"wrote {args.output}", file=sys.stderr)

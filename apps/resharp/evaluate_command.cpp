@@ -6,14 +6,18 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
 
 #include "commands.h"
+#include "grid_choice.h"
 #include "resharp/core/errors.h"
 #include "resharp/core/stage_timer.h"
+#include "resharp/eval/cad_metrics.h"
 #include "resharp/eval/detection.h"
 #include "resharp/eval/evaluation_files.h"
+#include "resharp/eval/exact_creases.h"
 #include "resharp/eval/exact_junctions.h"
 #include "resharp/eval/ideal_points.h"
 #include "resharp/eval/miss_causes.h"
@@ -24,6 +28,7 @@
 #include "resharp/io/atomic_file.h"
 #include "resharp/io/mesh_io.h"
 #include "resharp/pipeline/restore.h"
+#include "resharp/sim/csg_file.h"
 #include "resharp/sim/gcode.h"
 #include "resharp/sim/job.h"
 #include "resharp/sim/simulate.h"
@@ -34,7 +39,8 @@ namespace {
 using nlohmann::json;
 
 struct EvaluateArguments {
-    std::string input, oracle, job, output, segments, json;
+    std::string input, oracle, job, solid, output, segments, json;
+    GridChoice grid;             // the pitch the input was made with (a job's own by default)
     bool restore = false;        // run restore() here instead of reading --output
     bool exact_normals = false;  // with --restore: the oracle's normals replace eq. 5.1
     bool oracle_bands = false;   // with --restore: the split alone, on the oracle's bands
@@ -46,6 +52,7 @@ struct EvaluateArguments {
     eval::ExactJunctionOptions junctions;
     eval::RestorationOptions restoration;
     eval::SurfaceMetricsOptions surface;
+    eval::CadMetricsOptions cad;
     bool quiet = false;
 };
 
@@ -156,18 +163,75 @@ Restored obtain_restored(const EvaluateArguments& args, const Mesh& input,
     return {std::move(result.mesh), std::move(result.segmentation), "restore() in process"};
 }
 
-sim::Simulation simulate_fine(const sim::Job& job, const sim::ToolPath& path,
-                              const EvaluateArguments& args) {
+/// The exact surface the input was made from, sampled again on a finer grid: a job's program
+/// milled again (with the solid it mills, for the exact junctions), or a CSG solid (for its
+/// true sharp edges).
+struct ExactReference {
+    double h = 0.0;  // pitch of the input's grid, mm
+    sim::DexelGrid grid;
+    std::optional<eval::MachinedSolid> machined;
+    std::optional<sim::CsgSolid> csg;
+};
+
+ExactReference exact_reference(const EvaluateArguments& args) {
+    ExactReference r;
+    if (!args.solid.empty()) {
+        r.csg.emplace(sim::read_csg(args.solid));
+        r.h = resolve_pitch(args.grid, r.csg->bounds(), 0.0);
+        r.grid = sim::sample_solid(
+            sim::phased_grid(r.csg->bounds(), r.h * args.sample_pitch, args.grid_phase), *r.csg);
+        return r;
+    }
+    const sim::Job job = sim::read_job(args.job);
+    r.h = resolve_pitch(args.grid, job.stock, job.pitch);
+    const sim::ToolPath path = sim::read_gcode(job.program, {.start_position = job.start_position});
     sim::SimulationOptions options;
-    options.pitch = job.pitch * args.sample_pitch;
+    options.pitch = r.h * args.sample_pitch;
     options.grid_phase = args.grid_phase;
-    return sim::simulate(job.stock, job.tools, path, options);
+    r.grid = sim::simulate(job.stock, job.tools, path, options).grid;
+    r.machined.emplace(job.stock, job.tools, path, sim::SimulationOptions{.pitch = r.h});
+    return r;
+}
+
+json to_json(const eval::CadMetrics& m) {
+    const eval::CreaseMetrics& c = m.creases;
+    // NaN (no sharp edge on one side) has no JSON number: null.
+    const auto number = [](double x) { return std::isnan(x) ? json(nullptr) : json(x); };
+    return {{"chamfer", m.chamfer},
+            {"hausdorff", m.hausdorff},
+            {"normal_consistency", m.normal_consistency},
+            {"edge_chamfer_distance", number(c.ecd)},
+            {"edge_f1", c.ef1},
+            {"edge_precision", c.precision},
+            {"edge_recall", c.recall},
+            {"crease_length", c.mesh_length},
+            {"true_crease_length", c.true_length},
+            {"stray_crease_length", c.stray_length},
+            {"crease_length_ratio", number(c.length_ratio)}};
+}
+
+/// The "cad" block: the measures of a CAD part against the CSG solid, input and output.
+json cad_block(const ExactReference& reference, const Mesh& input, const Mesh& output,
+               const eval::SurfaceMetrics& surface_in, const eval::SurfaceMetrics& surface_out,
+               eval::CadMetricsOptions cad) {
+    const eval::CurveSamples creases = eval::sample_exact_creases(
+        *reference.csg, reference.grid, {.sharp_angle_deg = cad.sharp_angle_deg});
+    cad.spacing = reference.grid.spec.pitch;
+    const double diagonal = reference.csg->bounds().diagonal().norm();
+    return {
+        {"output", to_json(eval::measure_cad_part(output, surface_out, creases, diagonal, cad))},
+        {"input", to_json(eval::measure_cad_part(input, surface_in, creases, diagonal, cad))},
+        {"diagonal_mm", diagonal},
+        {"sharp_angle_deg", cad.sharp_angle_deg},
+        {"tau_diagonals", cad.tolerance},
+        {"stray_beyond_diagonals", cad.far}};
 }
 
 void run_evaluate(EvaluateArguments args) {
     const StageTimer total;
-    const sim::Job job = sim::read_job(args.job);
-    const double h = job.pitch;
+    const StageTimer sampling;
+    const ExactReference reference = exact_reference(args);
+    const double h = reference.h;
     args.restoration.pitch = args.surface.pitch = h;
 
     const Mesh input = weld(io::read_mesh(args.input));
@@ -176,23 +240,23 @@ void run_evaluate(EvaluateArguments args) {
     const Mesh& output = restored.mesh;
     eval::check_output_extends_input(input, output);
 
-    const sim::ToolPath path = sim::read_gcode(job.program, {.start_position = job.start_position});
-    const StageTimer sampling;
-    const sim::Simulation fine = simulate_fine(job, path, args);
-    const eval::SurfaceSamples exact = eval::sample_exact_surface(fine.grid);
+    const eval::SurfaceSamples exact = eval::sample_exact_surface(reference.grid);
     const double sampling_seconds = std::chrono::duration<double>(sampling.elapsed()).count();
 
     const StageTimer junctions;
     const auto first_order = eval::find_ideal_points(input, oracle, args.ideal);
-    const eval::MachinedSolid solid(job.stock, job.tools, path, {.pitch = h});
-    args.junctions.solver.pitch = h;
-    args.junctions.smooth_angle_deg = args.ideal.sharp_angle_deg;
-    const eval::ExactIdealPoints ideal =
-        eval::find_exact_ideal_points(input, oracle, first_order, solid, args.junctions);
+    // A CSG solid's surfaces have no eval::MachinedSolid: its ideal points stay first order.
+    eval::ExactIdealPoints ideal{first_order, {}, {}};
+    eval::RestorationOptions on_junction = args.restoration;
+    if (reference.machined) {
+        args.junctions.solver.pitch = h;
+        args.junctions.smooth_angle_deg = args.ideal.sharp_angle_deg;
+        ideal = eval::find_exact_ideal_points(input, oracle, first_order, *reference.machined,
+                                              args.junctions);
+        on_junction.count_input_vertices = true;
+    }
     const double junction_seconds = std::chrono::duration<double>(junctions.elapsed()).count();
 
-    eval::RestorationOptions on_junction = args.restoration;
-    on_junction.count_input_vertices = true;
     const eval::RestorationScore score =
         eval::score_restoration(input, output, ideal.points, exact, on_junction);
     const eval::RestorationScore first =
@@ -200,6 +264,7 @@ void run_evaluate(EvaluateArguments args) {
     const double tau = args.restoration.tolerance * h;
 
     json j;
+    j["ideal_points_on"] = reference.machined ? "the exact junction" : "first order (eq. 5.2)";
     j["restoration_rate"] = score.rate;
     j["restoration_rate_first_order"] = first.rate;
     // The input's own rate on the exact junction: the points an input vertex already restores.
@@ -249,11 +314,16 @@ void run_evaluate(EvaluateArguments args) {
     j["boundary_edges"] = valid_out.boundary_edges;
     j["validity"] = {{"input", to_json(valid_in)}, {"output", to_json(valid_out)}};
 
-    const eval::SurfaceSamples input_samples = eval::sample_mesh(input, fine.grid.spec);
-    const eval::SurfaceSamples output_samples = eval::sample_mesh(output, fine.grid.spec);
-    j["surface"] = {
-        {"output", to_json(eval::compare_surfaces(output, output_samples, exact, args.surface))},
-        {"input", to_json(eval::compare_surfaces(input, input_samples, exact, args.surface))}};
+    const eval::SurfaceSamples input_samples = eval::sample_mesh(input, reference.grid.spec);
+    const eval::SurfaceSamples output_samples = eval::sample_mesh(output, reference.grid.spec);
+    const eval::SurfaceMetrics surface_out =
+        eval::compare_surfaces(output, output_samples, exact, args.surface);
+    const eval::SurfaceMetrics surface_in =
+        eval::compare_surfaces(input, input_samples, exact, args.surface);
+    j["surface"] = {{"output", to_json(surface_out)}, {"input", to_json(surface_in)}};
+    if (reference.csg) {
+        j["cad"] = cad_block(reference, input, output, surface_in, surface_out, args.cad);
+    }
 
     j["settings"] = {{"h_mm", h},
                      {"sharp_angle_deg", args.ideal.sharp_angle_deg},
@@ -285,6 +355,15 @@ void run_evaluate(EvaluateArguments args) {
       << first.rate * 100 << " %; false insertions " << score.false_insertions << ", flipped "
       << j["flipped_triangles"] << ", self-intersections " << valid_out.self_intersections
       << " (input " << valid_in.self_intersections << ")\n";
+    if (j.contains("cad")) {
+        const json& in = j["cad"]["input"];
+        const json& out = j["cad"]["output"];
+        s << "CAD part, input -> output: Edge F-score " << in["edge_f1"] << " -> " << out["edge_f1"]
+          << ", Edge Chamfer Distance " << in["edge_chamfer_distance"] << " -> "
+          << out["edge_chamfer_distance"] << ", crease length " << in["crease_length_ratio"]
+          << " -> " << out["crease_length_ratio"] << " of the true, Chamfer " << in["chamfer"]
+          << " -> " << out["chamfer"] << " diagonals\n";
+    }
     std::cerr << s.str();
 }
 
@@ -296,16 +375,22 @@ void add_evaluate_command(CLI::App& app) {
         "evaluate",
         "Score a restored mesh against the simulator's oracle and the exact surface: restoration "
         "rate, detection, surface distances, validity (docs/results.md). Lengths are in mm, "
-        "thresholds in units of the job's pitch h.");
+        "thresholds in units of the job's pitch h. With --solid, also the measures of a CAD "
+        "part in units of its bounding-box diagonal (\"cad\" in the JSON).");
     command->add_option("--input", args->input, "the simulated mesh (resharp simulate -o)")
         ->required();
     command->add_option("--oracle", args->oracle, "its oracle PLY (resharp simulate --oracle)")
         ->required();
+    CLI::Option* job = command->add_option(
+        "--job", args->job,
+        "the job file the mesh was simulated from; its surface is sampled again on a finer grid");
     command
-        ->add_option("--job", args->job,
-                     "the job file the mesh was simulated from; its "
-                     "surface is sampled again on a finer grid")
-        ->required();
+        ->add_option("--solid", args->solid,
+                     "the CSG solid file the mesh was sampled from (resharp simulate --solid), "
+                     "instead of --job; its ideal points are first order (eq. 5.2)")
+        ->excludes(job);
+    add_grid_options(*command, args->grid,
+                     "the job's; 100 cells for a solid; give what simulate was given");
     command->add_option("--output", args->output,
                         "the restored mesh (with --restore: where to write it, optional)");
     command->add_option("--segments", args->segments,
@@ -362,8 +447,16 @@ void add_evaluate_command(CLI::App& app) {
         ->add_option("--edge-f1-threshold", args->surface.edge_f1_threshold,
                      "Edge F-score distance threshold in h (NDC: 0.32 h)")
         ->capture_default_str();
+    command
+        ->add_option("--edge-tolerance", args->cad.tolerance,
+                     "with --solid: tau of the Edge F-score, in bounding-box diagonals")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     command->add_flag("-q,--quiet", args->quiet, "print no summary");
     command->callback([args] {
+        if (args->job.empty() == args->solid.empty()) {
+            throw CLI::ValidationError("--job", "give exactly one of --job and --solid");
+        }
         if (!args->restore && args->output.empty()) {
             throw CLI::ValidationError("--output", "needed unless --restore is given");
         }

@@ -8,9 +8,11 @@
 #include <string>
 
 #include "commands.h"
+#include "grid_choice.h"
 #include "resharp/core/errors.h"
 #include "resharp/core/stage_timer.h"
 #include "resharp/io/mesh_io.h"
+#include "resharp/sim/csg_file.h"
 #include "resharp/sim/job.h"
 #include "resharp/sim/marching_cubes.h"
 #include "resharp/sim/simulate.h"
@@ -20,9 +22,10 @@ namespace {
 
 struct SimulateArguments {
     std::string job;
+    std::string solid;  // a CSG solid file instead of a job
     std::string output;
     std::string oracle;
-    double pitch = 0.0;        // 0: the job's
+    GridChoice grid;           // neither given: the job's pitch, or 100 cells for a solid
     std::string mesher;        // empty: the job's
     int seam_duplicates = -1;  // -1: the job's
     bool ascii = false;
@@ -67,15 +70,12 @@ private:
 
 double seconds(std::chrono::nanoseconds t) { return std::chrono::duration<double>(t).count(); }
 
-std::string default_output(const sim::Job& job) {
-    return std::filesystem::path(job.program).replace_extension(".stl").string();
-}
-
-/// The grid meshed with the job's meshing options, the command line's where given. A seam
-/// count the grid cannot hold is reported against the job key or the flag that set it.
-sim::OracleMesh mesh(const sim::DexelGrid& grid, const sim::Job& job,
+/// The grid meshed with the meshing options of the file (`from_file`: a job's, or the defaults
+/// for a solid), the command line's where given. A seam count the grid cannot hold is reported
+/// against the job key or the flag that set it.
+sim::OracleMesh mesh(const sim::DexelGrid& grid, const sim::MeshingOptions& from_file,
                      const SimulateArguments& args) {
-    sim::MeshingOptions options = job.meshing;
+    sim::MeshingOptions options = from_file;
     if (!args.mesher.empty()) options.mesher = *sim::mesher_from_string(args.mesher);
     if (args.seam_duplicates >= 0) options.seam_duplicates = args.seam_duplicates;
     try {
@@ -87,12 +87,19 @@ sim::OracleMesh mesh(const sim::DexelGrid& grid, const sim::Job& job,
     }
 }
 
-void run_simulate(const SimulateArguments& args) {
-    sim::Job job = sim::read_job(args.job);
-    sim::SimulationOptions options = args.options;
-    options.pitch = args.pitch > 0.0 ? args.pitch : job.pitch;
-    const sim::ToolPath path = sim::read_gcode(job.program, {.start_position = job.start_position});
+/// What was meshed, with what it took.
+struct Meshed {
+    sim::OracleMesh mesh;
+    sim::GridSpec grid;
+    std::string summary;  // the start of the report's first line
+    std::chrono::nanoseconds sampling{}, meshing{};
+};
 
+Meshed mill_job(const SimulateArguments& args) {
+    const sim::Job job = sim::read_job(args.job);
+    sim::SimulationOptions options = args.options;
+    options.pitch = resolve_pitch(args.grid, job.stock, job.pitch);
+    const sim::ToolPath path = sim::read_gcode(job.program, {.start_position = job.start_position});
     const StageTimer simulation_timer;
     sim::Simulation simulation;
     {
@@ -100,12 +107,44 @@ void run_simulate(const SimulateArguments& args) {
         simulation = sim::simulate(job.stock, job.tools, path, options,
                                    [&](double fraction) { bar.update(fraction); });
     }
-    const auto simulation_time = simulation_timer.elapsed();
+    Meshed m;
+    m.sampling = simulation_timer.elapsed();
     const StageTimer meshing_timer;
-    const sim::OracleMesh meshed = mesh(simulation.grid, job, args);
-    const auto meshing_time = meshing_timer.elapsed();
+    m.mesh = mesh(simulation.grid, job.meshing, args);
+    m.meshing = meshing_timer.elapsed();
+    m.grid = simulation.grid.spec;
+    std::ostringstream s;
+    s << job.program << ": " << simulation.stats.moves << " moves ("
+      << simulation.stats.cutting_moves << " cutting, " << simulation.stats.swept_volumes
+      << " swept volumes)";
+    m.summary = s.str();
+    return m;
+}
 
-    const std::string output = args.output.empty() ? default_output(job) : args.output;
+Meshed sample_solid_file(const SimulateArguments& args) {
+    const sim::CsgSolid solid(sim::read_csg(args.solid));
+    const double pitch = resolve_pitch(args.grid, solid.bounds(), 0.0);
+    const StageTimer sampling_timer;
+    const sim::DexelGrid grid =
+        sim::sample_solid(sim::phased_grid(solid.bounds(), pitch, args.options.grid_phase), solid);
+    Meshed m;
+    m.sampling = sampling_timer.elapsed();
+    const StageTimer meshing_timer;
+    m.mesh = mesh(grid, sim::MeshingOptions{}, args);
+    m.meshing = meshing_timer.elapsed();
+    m.grid = grid.spec;
+    m.summary =
+        args.solid + ": CSG solid, " + std::to_string(solid.surfaces().size()) + " surfaces";
+    return m;
+}
+
+void run_simulate(const SimulateArguments& args) {
+    const Meshed m = args.solid.empty() ? mill_job(args) : sample_solid_file(args);
+    const sim::OracleMesh& meshed = m.mesh;
+    const std::string& source = args.solid.empty() ? args.job : args.solid;
+    const std::string output =
+        args.output.empty() ? std::filesystem::path(source).replace_extension(".stl").string()
+                            : args.output;
     const io::WriteOptions encoding{.encoding =
                                         args.ascii ? io::Encoding::Ascii : io::Encoding::Binary};
     io::write_mesh(output, meshed.mesh, encoding);
@@ -119,14 +158,12 @@ void run_simulate(const SimulateArguments& args) {
                                                             : std::span(meshed.surface_points)});
     }
     if (args.quiet) return;
-    const auto& counts = simulation.grid.spec.counts;
+    const auto& counts = m.grid.counts;
     std::ostringstream s;
-    s << job.program << ": " << simulation.stats.moves << " moves ("
-      << simulation.stats.cutting_moves << " cutting, " << simulation.stats.swept_volumes
-      << " swept volumes), grid " << counts[0] << " x " << counts[1] << " x " << counts[2]
-      << " at h = " << options.pitch << " mm\n"
-      << "  simulation " << seconds(simulation_time) << " s, meshing " << seconds(meshing_time)
-      << " s\n"
+    s << m.summary << ", grid " << counts[0] << " x " << counts[1] << " x " << counts[2]
+      << " at h = " << m.grid.pitch << " mm\n"
+      << "  " << (args.solid.empty() ? "simulation " : "sampling ") << seconds(m.sampling)
+      << " s, meshing " << seconds(m.meshing) << " s\n"
       << "  " << meshed.mesh.face_count() << " triangles, " << meshed.mesh.vertex_count()
       << " vertices";
     if (meshed.stats.duplicated_triangles > 0) {
@@ -148,14 +185,18 @@ void add_simulate_command(CLI::App& app) {
     auto args = std::make_shared<SimulateArguments>();
     CLI::App* command = app.add_subcommand(
         "simulate",
-        "Mill a box stock along a G-code program on a tri-dexel grid and mesh the "
-        "result with marching cubes, every vertex exactly on the machined surface. "
-        "The job file (JSON) gives the stock, the tool table, the pitch and the "
-        "program; see docs/oracle.md for the oracle file.");
-    command->add_option("job", args->job, "job file (JSON)")->required();
+        "Mill a box stock along a G-code program on a tri-dexel grid, or sample a CSG solid "
+        "(--solid) on it, and mesh the result (marching cubes by default, every vertex exactly "
+        "on the surface). The job file (JSON) gives the stock, the tool table, the pitch and the "
+        "program; the solid file is described in src/resharp/sim/csg_file.h; see "
+        "docs/oracle.md for the oracle file.");
+    CLI::Option* job = command->add_option("job", args->job, "job file (JSON)");
+    CLI::Option* solid =
+        command->add_option("--solid", args->solid, "a CSG solid file (JSON) instead of a job");
+    job->excludes(solid);
     command->add_option("-o,--output", args->output,
-                        "mesh to write (.stl, .obj, .ply, .off); default: the program's path "
-                        "with .stl");
+                        "mesh to write (.stl, .obj, .ply, .off); default: the job's or solid's "
+                        "path with .stl");
     command
         ->add_option("--oracle", args->oracle,
                      "also write the mesh as PLY with each vertex's exact normal (nx ny nz) "
@@ -164,11 +205,10 @@ void add_simulate_command(CLI::App& app) {
             return std::filesystem::path(path).extension() == ".ply" ? std::string()
                                                                      : "the oracle is a .ply file";
         });
-    command->add_option("--pitch", args->pitch, "grid pitch h in mm (default: the job's)")
-        ->check(CLI::PositiveNumber);
+    add_grid_options(*command, args->grid, "the job's pitch; 100 cells for a solid");
     command
         ->add_option("--grid-phase", args->options.grid_phase,
-                     "grid nodes at stock min + (k + phase) * h")
+                     "grid nodes at the stock's (or solid's box's) min + (k + phase) * h")
         ->capture_default_str();
     command
         ->add_option("--helix-tolerance", args->options.helix_tolerance,
@@ -191,7 +231,12 @@ void add_simulate_command(CLI::App& app) {
         ->check(CLI::NonNegativeNumber);
     command->add_flag("--ascii", args->ascii, "write STL and PLY as text instead of binary");
     command->add_flag("-q,--quiet", args->quiet, "no progress bar and no summary");
-    command->callback([args] { run_simulate(*args); });
+    command->callback([args] {
+        if (args->job.empty() && args->solid.empty()) {
+            throw CLI::RequiredError("a job file or --solid");
+        }
+        run_simulate(*args);
+    });
 }
 
 }  // namespace resharp::cli

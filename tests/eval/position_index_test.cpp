@@ -21,11 +21,14 @@ TEST(PositionIndex, MatchesByFloatRounding) {
     EXPECT_FALSE(index.find(Vec3(2, 1, 3)).has_value());
 }
 
-TEST(PositionIndex, KeepsTheFirstOfPointsThatRoundAlike) {
+TEST(PositionIndex, ExactCoordinatesKeepPointsThatRoundAlikeApart) {
     const std::vector<Vec3> points{Vec3(5, 5, 5), Vec3(5, 5, 5 + 1e-12), Vec3(6, 6, 6)};
     const PositionIndex index(points);
     EXPECT_EQ(index.find(Vec3(5, 5, 5)), Index(0));
+    EXPECT_EQ(index.find(Vec3(5, 5, 5 + 1e-12)), Index(1));
     EXPECT_EQ(index.find(Vec3(6, 6, 6)), Index(2));
+    // Only the rounding matches: the first of the points that round alike.
+    EXPECT_EQ(index.find(Vec3(5, 5, 5 + 2e-12)), Index(0));
 }
 
 }  // namespace

@@ -87,10 +87,7 @@ std::vector<SweptVolume> swept_volumes(const Box3& stock, const std::map<int, To
 Simulation simulate(const Box3& stock, const std::map<int, Tool>& tools, const ToolPath& path,
                     const SimulationOptions& options,
                     const std::function<void(double)>& on_progress) {
-    const Vec3 anchor = stock.min().array() + options.grid_phase * options.pitch;
-    const GridSpec spec = grid_enclosing(stock, options.pitch, anchor);
-    const double nodes = static_cast<double>(spec.counts[0]) * spec.counts[1] * spec.counts[2];
-    if (nodes > 2147483647.0) throw InvalidInput("grid too fine: more than 2^31 nodes");
+    const GridSpec spec = phased_grid(stock, options.pitch, options.grid_phase);
 
     Simulation result;
     const std::vector<SweptVolume> volumes =

@@ -48,6 +48,19 @@ GridSpec grid_enclosing(const Box3& box, double pitch, const Vec3& anchor) {
     return spec;
 }
 
+GridSpec phased_grid(const Box3& box, double pitch, double phase) {
+    const GridSpec spec = grid_enclosing(box, pitch, box.min().array() + phase * pitch);
+    const double nodes = static_cast<double>(spec.counts[0]) * spec.counts[1] * spec.counts[2];
+    if (nodes > 2147483647.0) throw InvalidInput("grid too fine: more than 2^31 nodes");
+    return spec;
+}
+
+double pitch_for_cells(const Box3& box, double cells) {
+    if (!(cells > 0.0) || !std::isfinite(cells)) throw InvalidInput("cells must be positive");
+    if (box.isEmpty() || !box.sizes().allFinite()) throw InvalidInput("box is empty or not finite");
+    return box.sizes().maxCoeff() / cells;
+}
+
 void subtract_intervals(RayIntervals& solid, std::span<const Interval> removed,
                         std::vector<Interval>& scratch) {
     // The remaining material is bounded by the removed volume, whose outward normal points into

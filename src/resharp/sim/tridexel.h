@@ -108,6 +108,16 @@ struct GridSpec {
 /// \throws InvalidInput if pitch is not positive or the box is empty or not finite.
 GridSpec grid_enclosing(const Box3& box, double pitch, const Vec3& anchor = Vec3::Zero());
 
+/// The simulator's grid over `box`: pitch h = `pitch`, nodes at box.min + (k + phase) * h on
+/// every axis (k integer), enclosing the box as grid_enclosing() does. A phase off 0 keeps faces
+/// at round coordinates off the grid planes.
+/// \throws InvalidInput as grid_enclosing(), or if the grid would exceed 2^31 nodes.
+GridSpec phased_grid(const Box3& box, double pitch, double phase);
+
+/// The pitch that puts `cells` cells along the longest side of `box`.
+/// \throws InvalidInput unless cells is positive and finite and the box is not empty.
+double pitch_for_cells(const Box3& box, double cells);
+
 /// The solid intervals of one ray.
 using RayIntervals = SmallVector<Interval, 2>;
 
