@@ -14,7 +14,8 @@ formats=(stl obj ply off)
 
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_CXX_COMPILER=clang++ -DRESHARP_BUILD_FUZZERS=ON \
-    -DRESHARP_BUILD_TESTS=OFF -DRESHARP_BUILD_BENCHMARKS=OFF -DRESHARP_BUILD_VIEWER=OFF >/dev/null
+    -DRESHARP_BUILD_TESTS=OFF -DRESHARP_BUILD_BENCHMARKS=OFF -DRESHARP_BUILD_VIEWER=OFF \
+    -DRESHARP_BUILD_PYTHON=OFF >/dev/null
 cmake --build "$build" -j2 --target "${formats[@]/#/resharp_fuzz_}"
 
 failed=()

@@ -11,6 +11,7 @@ packages=(
     libgtest-dev libgmock-dev libbenchmark-dev
     clang clang-format libclang-rt-dev
     python3
+    python3-dev python3-venv pybind11-dev python3-pybind11 python3-numpy python3-pytest
     chromium  # the viewer's tests and benchmark: headless, software WebGL
 )
 # The viewer's page is bundled by node at build time; a Node.js that came with its own npm is

@@ -1,15 +1,12 @@
 #pragma once
-/// The restore report as JSON (`resharp restore --report`), and the one-paragraph summary.
+/// The restore report as JSON (`resharp restore --report`: resharp/pipeline/report_json.h),
+/// and the one-paragraph summary.
 
-#include <nlohmann/json.hpp>
 #include <string>
 
-#include "resharp/pipeline/report.h"
+#include "resharp/pipeline/report_json.h"
 
 namespace resharp::cli {
-
-/// Every counter of the report under stable keys; times in seconds.
-nlohmann::json report_to_json(const RestoreReport& report);
 
 /// The summary printed on stderr after a restore.
 std::string summarize(const RestoreReport& report, const std::string& input,

@@ -2,11 +2,13 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "batch.h"
 #include "commands.h"
 #include "report_json.h"
+#include "resharp/pipeline/option_table.h"
 #include "restore_file.h"
 
 namespace resharp::cli {
@@ -21,117 +23,55 @@ struct RestoreArguments {
     RestoreOptions options;
 };
 
-/// One flag per field of RestoreOptions; the defaults shown by --help are the struct's own.
-void bind_options(CLI::App& command, RestoreOptions& o) {
-    const std::map<std::string, CurvatureFeature> features{
-        {"magnitude", CurvatureFeature::Magnitude}, {"signed", CurvatureFeature::Signed}};
-    command
-        .add_option("--curvature-feature", o.edges.feature,
-                    "what k-means clusters: 'signed' (k1, k2) as the paper, or 'magnitude' "
-                    "(|k|min, |k|max), which keeps concave and convex edges together")
-        ->transform(CLI::CheckedTransformer(features, CLI::ignore_case))
-        ->option_text("{magnitude,signed}=magnitude");
-    const std::map<std::string, NormalEstimate> estimates{
-        {"fit", NormalEstimate::LinearFit}, {"angle-weighted", NormalEstimate::AngleWeighted}};
-    command
-        .add_option("--normals", o.normals.estimate,
-                    "feature normals at band vertices: 'angle-weighted' is eq. 5.1 as the "
-                    "paper; 'fit' extrapolates the feature's face normals to the vertex, "
-                    "exact on planes and better on curved features")
-        ->transform(CLI::CheckedTransformer(estimates, CLI::ignore_case))
-        ->option_text("{fit,angle-weighted}=fit");
-    command
-        .add_option("--max-fit-correction", o.normals.max_fit_correction_deg,
-                    "a fitted normal further than this (degrees) from eq. 5.1's is not used")
-        ->capture_default_str();
-    command
-        .add_option("--max-fit-residual", o.normals.max_fit_residual_deg,
-                    "faces whose normal is further than this (degrees) from the first fit, such "
-                    "as faces beyond a scallop cusp, are left out of the second; 180 keeps all")
-        ->capture_default_str();
-    command
-        .add_option("--kmeans-tolerance", o.edges.kmeans_tolerance,
-                    "eps_K (paper eq. 3.2): k-means stops when centres move less (1/length)")
-        ->capture_default_str();
-    command
-        .add_option("--max-kmeans-iterations", o.edges.max_kmeans_iterations,
-                    "safety bound on k-means iterations")
-        ->capture_default_str();
-    command
-        .add_option("--bridge-walk", o.edges.max_bridge_walk,
-                    "P (paper 3.3): vertices a walk may visit to bridge a broken edge")
-        ->capture_default_str();
-    command
-        .add_option("--flat-spread", o.edges.flat_normal_spread_deg,
-                    "edge vertices whose one-ring normals spread less (degrees) are flat")
-        ->capture_default_str();
-    command
-        .add_option("--region-angle", o.features.max_normal_angle_deg,
-                    "eps_theta (paper 4): neighbouring faces closer than this (degrees) grow "
-                    "into one patch")
-        ->capture_default_str();
-    command
-        .add_option("--tiny-patch", o.features.tiny_patch_faces,
-                    "patches with fewer faces are tiny and absorbed (paper 4)")
-        ->capture_default_str();
-    command
-        .add_option("--band-interior-fraction", o.features.band_interior_fraction,
-                    "patches with fewer interior vertices than this share are chamfer bands")
-        ->capture_default_str();
-    command
-        .add_option("--merge-angle", o.features.merge_angle_deg,
-                    "touching patches whose normals differ less (degrees) along their border "
-                    "are merged")
-        ->capture_default_str();
-    command
-        .add_option("--curved-region-faces", o.features.curved_region_faces,
-                    "a region this large only grows into faces near its seed's normal, so "
-                    "growth cannot creep around a scallop cusp; 0 grows without limit (paper)")
-        ->capture_default_str();
-    command.add_flag("!--merge-over-sharp-borders", o.features.keep_sharp_borders_apart,
-                     "plain greedy merging (paper): may join patches through smooth borders even "
-                     "where they meet at a sharp border elsewhere");
-    command
-        .add_option("--unconfirmed-border-angle", o.bands.unconfirmed_border_angle_deg,
-                    "a patch border without edge vertices is a sharp edge when the patches' "
-                    "normals differ more (degrees); 180 is the paper's rule")
-        ->capture_default_str();
-    command
-        .add_option("--smooth-border-angle", o.bands.smooth_border_angle_deg,
-                    "a patch border whose patches' normals differ less (degrees) is never a "
-                    "sharp edge, even with edge vertices; 0 is the paper's rule")
-        ->capture_default_str();
-    command
-        .add_option("--spike-angle", o.points.spike_angle_deg,
-                    "corner points are refused when normals around the corner differ more "
-                    "(degrees, paper 5.3)")
-        ->capture_default_str();
-    command
-        .add_option("--thin-angle", o.guard.thin_material_angle_deg,
-                    "the guard: pieces joining vertices whose normals differ more (degrees) "
-                    "stand across thin material and must clear both surfaces by a wider margin")
-        ->capture_default_str();
-    command
-        .add_option("--fold-angle", o.harm.fold_angle_deg,
-                    "the harm check: adjacent output faces whose normals differ more (degrees) "
-                    "than their input faces' did are folded, and their points undone")
-        ->capture_default_str();
-    command.add_flag("!--no-crossing-check", o.harm.check_crossings,
-                     "skip the harm check's test of every new piece against the faces near it "
-                     "(faster; a self-intersection is then no longer ruled out)");
-    command
-        .add_option("--harm-rounds", o.max_harm_rounds,
-                    "rounds of guard, split and harm check at most; past them the mesh comes "
-                    "back unchanged")
-        ->capture_default_str();
-    command.add_flag("!--keep-duplicate-faces", o.repair.remove_duplicate_faces,
-                     "keep exact duplicate faces (same vertices, same orientation) instead of "
-                     "removing all but the first copy");
-    command
-        .add_option("--threads", o.threads,
-                    "worker threads, 0 for all cores; the output "
-                    "does not depend on it")
-        ->capture_default_str();
+/// The --help group of the method's options (pipeline/option_table.h), apart from the files
+/// and the run's own flags.
+constexpr const char* kMethodGroup = "Method options";
+
+CLI::Option* add_table_option(CLI::App& command, const std::string& flag, const std::string& help,
+                              const FlagField& f, RestoreOptions& o) {
+    return command.add_flag(f.when_given ? flag : "!" + flag, f.field(o), help);
+}
+
+template <class T>
+CLI::Option* add_table_option(CLI::App& command, const std::string& flag, const std::string& help,
+                              const ValueField<T>& f, RestoreOptions& o) {
+    return command.add_option(flag, f.field(o), help)->capture_default_str();
+}
+
+template <class E>
+CLI::Option* add_table_option(CLI::App& command, const std::string& flag, const std::string& help,
+                              const ChoiceField<E>& f, RestoreOptions& o) {
+    std::map<std::string, E> names;
+    std::string text;
+    for (const auto& [name, value] : f.choices) {
+        names.emplace(name, value);
+        text += (text.empty() ? "{" : ",") + std::string(name);
+    }
+    E& field = f.field(o);
+    text += "}=" + std::string(choice_name(f, field));
+    return command.add_option(flag, field, help)
+        ->transform(CLI::CheckedTransformer(names, CLI::ignore_case))
+        ->option_text(text);
+}
+
+/// One flag per entry of the option table, bound to its field, so that --help shows the
+/// struct's own defaults; then --paper, which excludes the options of the paper's choices.
+void bind_options(CLI::App& command, RestoreOptions& o, bool& paper) {
+    std::vector<CLI::Option*> paper_choices;
+    for (const OptionInfo& info : restore_option_table()) {
+        CLI::Option* option = std::visit(
+            [&](const auto& f) {
+                return add_table_option(command, "--" + std::string(info.name),
+                                        std::string(info.help), f, o);
+            },
+            info.field);
+        option->group(kMethodGroup);
+        if (info.paper_choice) paper_choices.push_back(option);
+    }
+    CLI::Option* paper_flag = command.add_flag("--" + std::string(kPaperOptionName), paper,
+                                               std::string(kPaperOptionHelp));
+    paper_flag->group(kMethodGroup);
+    for (CLI::Option* choice : paper_choices) paper_flag->excludes(choice);
 }
 
 void run_restore(const RestoreArguments& args, const CLI::App& command) {
@@ -177,17 +117,7 @@ void add_restore_command(CLI::App& app) {
     command->add_flag("-q,--quiet", args->batch.quiet,
                       "print no summary (a batch still prints each failure)");
     add_batch_options(*command, args->batch);
-    bind_options(*command, args->options);
-    CLI::Option* paper = command->add_flag(
-        "--paper", args->paper,
-        "the paper's choice wherever resharp makes another (docs/method.md): signed k-means, "
-        "unlimited region growing, plain merging, borders confirmed by edge vertices only, eq. "
-        "5.1 normals");
-    for (const char* choice :
-         {"--curvature-feature", "--normals", "--curved-region-faces", "--merge-over-sharp-borders",
-          "--unconfirmed-border-angle", "--smooth-border-angle"}) {
-        paper->excludes(command->get_option(choice));
-    }
+    bind_options(*command, args->options, args->paper);
     command->callback([args, command] { run_restore(*args, *command); });
 }
 
