@@ -41,8 +41,7 @@ struct Stages {
                                               features.face_patch, features.vertex_patch);
     FeatureNormals normals = feature_normals(mesh, connectivity, face_normals, features.face_patch,
                                              features.vertex_patch, bands);
-    SharpPoints points =
-        place_sharp_points(mesh, connectivity, face_normals, bands, normals.normal);
+    SharpPoints points = place_sharp_points(mesh, connectivity, face_normals, bands, normals);
 
     explicit Stages(const Mesh& m) : mesh(m) {}
 };

@@ -10,6 +10,7 @@
 #include "resharp/restoration/feature_normals.h"
 #include "resharp/segmentation/edge_segmentation.h"
 #include "resharp/segmentation/feature_segmentation.h"
+#include "resharp/surfaces/local_quadric.h"
 #include "support/grid_shapes.h"
 
 namespace resharp {
@@ -149,6 +150,42 @@ FoldedSheet folded_sheet() {
     }
     sheet.centre = 7 * 3 + 2;
     return sheet;
+}
+
+// On the drilled plate's hole wall (radius 3.08 mm, normals pointing into the hole, towards its
+// axis) the fitted second-order shape bends towards the normal by 1 / r across the axis and not
+// along it; on the flat faces it is zero.
+TEST(FeatureNormals, CurvatureOfTheHoleWallIsOneOverItsRadius) {
+    const test::SampledShape shape = test::sampled_drilled_plate();
+    const Classified c = classify(shape.mesh);
+    const FeatureNormals fit =
+        feature_normals(shape.mesh, c.connectivity, c.face_normals, c.features.face_patch,
+                        c.features.vertex_patch, c.bands);
+    constexpr int kWall = 6;
+    const double r = 3.08;
+    std::size_t wall = 0, flat = 0, close = 0;
+    for (Index v = 0; v < shape.mesh.vertex_count(); ++v) {
+        if (fit.normal[v].isZero(0.0)) continue;
+        const Eigen::Matrix3d frame = tangent_frame(fit.normal[v]);
+        const Eigen::Vector3d k = fit.curvature[v].cast<double>();
+        if (shape.surface_ids[v] != kWall) {
+            flat += k.isZero(0.0f);
+            continue;
+        }
+        ++wall;
+        // The curvature along the wall's horizontal tangent and along z.
+        const Eigen::Vector2d across =
+            (frame.leftCols<2>().transpose() * fit.normal[v].cross(Vec3::UnitZ())).normalized();
+        const Eigen::Vector2d along = (frame.leftCols<2>().transpose() * Vec3::UnitZ());
+        const Eigen::Matrix2d hessian{{k[0], k[1]}, {k[1], k[2]}};
+        const double k_across = across.dot(hessian * across), k_along = along.dot(hessian * along);
+        close += std::abs(k_across - 1.0 / r) < 0.15 / r && std::abs(k_along) < 0.1 / r;
+    }
+    // At h = 0.5 the wall's band vertices number about 100; a few near the top and bottom faces
+    // have too few wall faces for a fit (curvature 0), the rest lie within 15 % of 1 / r.
+    EXPECT_GT(wall, 80u);
+    EXPECT_GT(close, 0.9 * wall) << close << " of " << wall << " wall vertices";
+    EXPECT_GT(flat, 300u);
 }
 
 TEST(FeatureNormals, FitLeavesOutFacesBeyondACreaseInsideThePatch) {

@@ -70,8 +70,8 @@ TEST(Guard, RepairsStayWithinTheirBoundWhenEveryPointIsWrong) {
     const test::SampledShape shape = test::sampled_drilled_plate();
     const Detection d = detect_bands(shape.mesh, build_connectivity(shape.mesh), {});
     const InputSurface surface = d.surface(shape.mesh);
-    SharpPoints points = place_sharp_points(shape.mesh, d.connectivity, d.normals.face, d.bands,
-                                            d.feature_normals.normal);
+    SharpPoints points =
+        place_sharp_points(shape.mesh, d.connectivity, d.normals.face, d.bands, d.feature_normals);
     ASSERT_GT(points.points.size(), 50u);
     std::mt19937 random(7);
     std::normal_distribution<double> jitter(0.0, shape.pitch);

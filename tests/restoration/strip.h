@@ -25,6 +25,7 @@ struct Strip {
         normals = surface_normals(mesh, connectivity);
         feature_normals.normal.resize(mesh.vertex_count(), Vec3::Zero());
         feature_normals.fit_correction_deg.resize(mesh.vertex_count(), 0.0f);
+        feature_normals.curvature.resize(mesh.vertex_count(), Eigen::Vector3f::Zero());
     }
 };
 
@@ -47,8 +48,7 @@ inline SharpPoints points_on_edge_a1_b0(const Strip& s) {
         const Index u = tail_vertex(s.mesh, h), v = head_vertex(s.mesh, h);
         if ((u == 1 && v == 2) || (u == 2 && v == 1)) bands.is_crossing[h] = 1;
     }
-    return place_sharp_points(s.mesh, s.connectivity, s.normals.face, bands,
-                              s.feature_normals.normal);
+    return place_sharp_points(s.mesh, s.connectivity, s.normals.face, bands, s.feature_normals);
 }
 
 }  // namespace resharp::test

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "resharp/eval/ideal_points.h"
-#include "resharp/eval/junction_solver.h"
 #include "resharp/eval/machined_solid.h"
+#include "resharp/surfaces/junction.h"
 
 namespace resharp::eval {
 

@@ -10,14 +10,9 @@
 
 #include "resharp/core/types.h"
 #include "resharp/sim/sweep.h"
+#include "resharp/surfaces/junction.h"
 
 namespace resharp::eval {
-
-/// An implicit function's value and gradient at a point; the surface is where the value is 0.
-struct SurfaceValue {
-    double value = 0.0;
-    Vec3 gradient = Vec3::Zero();
-};
 
 /// One exact surface. Values are signed distances (positive outside the tool, or outside the
 /// stock for a stock face) for every form but Rim, whose value is a distance in plan.

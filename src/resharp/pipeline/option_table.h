@@ -34,9 +34,9 @@ struct ChoiceField {
     std::span<const std::pair<std::string_view, E>> choices;
 };
 
-using OptionField =
-    std::variant<ValueField<double>, ValueField<int>, ValueField<std::size_t>, FlagField,
-                 ChoiceField<CurvatureFeature>, ChoiceField<NormalEstimate>>;
+using OptionField = std::variant<ValueField<double>, ValueField<int>, ValueField<std::size_t>,
+                                 FlagField, ChoiceField<CurvatureFeature>,
+                                 ChoiceField<NormalEstimate>, ChoiceField<PointPlacement>>;
 
 struct OptionInfo {
     /// The flag without its dashes ("region-angle"); Python writes '_' for '-' (region_angle).

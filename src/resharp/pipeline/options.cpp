@@ -9,6 +9,7 @@ RestoreOptions paper_variant(RestoreOptions options) {
     options.bands.unconfirmed_border_angle_deg = 180.0;
     options.bands.smooth_border_angle_deg = 0.0;
     options.normals.estimate = NormalEstimate::AngleWeighted;
+    options.points.placement = PointPlacement::TangentPlanes;
     return options;
 }
 

@@ -58,6 +58,7 @@ struct RestoreReport {
     std::size_t corner_points_inserted = 0;
     std::size_t refused_by_flip_test = 0;    ///< eq. 5.4
     std::size_t refused_by_spike_test = 0;   ///< §5.3
+    std::size_t first_order_points = 0;      ///< second-order placement fell back to eq. 5.2/5.3
     std::size_t refused_missing_normal = 0;  ///< a vertex with no face on its own feature
     std::size_t refused_by_quality = 0;      ///< the guard: a split piece would flip or collapse
     std::size_t refused_by_guard = 0;        ///< the guard: a piece would turn against the face it

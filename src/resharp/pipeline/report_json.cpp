@@ -53,6 +53,7 @@ nlohmann::json report_to_json(const RestoreReport& r) {
           {"corner_points_inserted", r.corner_points_inserted},
           {"refused_by_flip_test", r.refused_by_flip_test},
           {"refused_by_spike_test", r.refused_by_spike_test},
+          {"first_order_points", r.first_order_points},
           {"refused_missing_normal", r.refused_missing_normal},
           {"refused_by_quality", r.refused_by_quality},
           {"refused_by_guard", r.refused_by_guard},

@@ -187,7 +187,7 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
     StageClock clock(r.stage_time, options.stop);
     clock.run(Stage::SharpPoints, [&] {
         r.points = place_sharp_points(input.mesh, input.connectivity, input.normals.face, bands,
-                                      feature_normals.normal, options.points);
+                                      feature_normals, options.points);
     });
     std::vector<std::uint8_t> withdrawn(r.points.points.size(), 0);
     PointSlots checked;  // the slots of the last split checked
@@ -327,6 +327,7 @@ private:
     void record(const BandRestoration& r) {
         report_.refused_by_flip_test = r.points.refused_by_flip_test;
         report_.refused_by_spike_test = r.points.refused_by_spike_test;
+        report_.first_order_points = r.points.first_order_fallbacks;
         report_.refused_missing_normal = r.points.missing_normal;
         report_.refused_by_quality = r.guard.refused_by_quality;
         report_.refused_by_guard = r.guard.refused_by_guard;

@@ -11,6 +11,7 @@
 
 #include "resharp/core/errors.h"
 #include "resharp/mesh/geometry.h"
+#include "resharp/surfaces/local_quadric.h"
 
 namespace resharp {
 namespace {
@@ -108,9 +109,7 @@ struct FitSamples {
 };
 
 void fill_samples(const Mesh& mesh, const std::vector<Vec3>& normals, std::span<const Index> faces,
-                  Index v, const Vec3& guess, FitSamples& samples) {
-    const Vec3 t1 = guess.unitOrthogonal();
-    const Vec3 t2 = guess.cross(t1);
+                  Index v, const Vec3& t1, const Vec3& t2, FitSamples& samples) {
     samples.rows.clear();
     samples.normals.clear();
     samples.use.assign(faces.size(), 1);
@@ -144,14 +143,22 @@ std::optional<Eigen::Matrix3d> solve_fit(const FitSamples& s) {
     return Eigen::Matrix3d(ata.ldlt().solve(atb));
 }
 
+/// What the linear fit of the normals gives at a vertex.
+struct NormalFit {
+    Vec3 normal;            ///< unit
+    Eigen::Matrix3d slope;  ///< the unit normal's derivative: d -> change of normal for step d
+};
+
 /// Least-squares fit n(x) = n0 + a u + b w of the face normals over the faces' centroids, with
 /// (u, w) the centroid's offset from v in the tangent plane of `guess`, refitted once without
 /// the faces whose residual exceeds `max_residual` (radians, as a chord of unit normals);
-/// returns n0, the fitted normal at v, or nullopt when the centroids do not span the plane.
-std::optional<Vec3> fit_normal_at(const Mesh& mesh, const std::vector<Vec3>& normals,
-                                  std::span<const Index> faces, Index v, const Vec3& guess,
-                                  double max_residual, FitSamples& samples) {
-    fill_samples(mesh, normals, faces, v, guess, samples);
+/// returns n0 normalised and the slope, or nullopt when the centroids do not span the plane.
+std::optional<NormalFit> fit_normal_at(const Mesh& mesh, const std::vector<Vec3>& normals,
+                                       std::span<const Index> faces, Index v, const Vec3& guess,
+                                       double max_residual, FitSamples& samples) {
+    const Vec3 t1 = guess.unitOrthogonal();
+    const Vec3 t2 = guess.cross(t1);
+    fill_samples(mesh, normals, faces, v, t1, t2, samples);
     const double max_residual2 = max_residual * max_residual;
     std::optional<Eigen::Matrix3d> fit = solve_fit(samples);
     if (!fit) return std::nullopt;
@@ -165,7 +172,12 @@ std::optional<Vec3> fit_normal_at(const Mesh& mesh, const std::vector<Vec3>& nor
     if (!fit) return std::nullopt;
     const Vec3 n0 = fit->row(0).transpose();
     if (!n0.allFinite() || n0.isZero(0.0)) return std::nullopt;
-    return Vec3(n0.normalized());
+    // n0 + a u + b w normalised: its derivative is (a t1^T + b t2^T) / |n0| once the part along
+    // the normal is dropped, which quadric_from_normal_slope() does.
+    const Eigen::Matrix3d slope =
+        (fit->row(1).transpose() * t1.transpose() + fit->row(2).transpose() * t2.transpose()) /
+        n0.norm();
+    return NormalFit{n0.normalized(), slope};
 }
 
 struct FitLimits {
@@ -188,18 +200,21 @@ bool coplanar(const std::vector<Vec3>& normals, std::span<const Index> faces) {
 }
 
 /// Replaces eq. 5.1's normal n at v by the linear fit where the fit is well posed, not planar
-/// and corrects n by less than the limit; `correction` gets the angle (degrees) it moved n by.
+/// and corrects n by less than the limit; `correction` gets the angle (degrees) it moved n by
+/// and `curvature` the fit's second-order shape in tangent_frame(n).
 void refine_by_fit(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>& normals,
                    const std::vector<Index>& face_patch, const std::vector<Index>& vertex_patch,
                    Index v, const FitLimits& limits, Vec3& n, float& correction,
-                   FitScratch& scratch) {
+                   Eigen::Vector3f& curvature, FitScratch& scratch) {
     fit_faces(mesh, c, face_patch, vertex_patch, v, scratch.faces, scratch.taken);
     if (scratch.faces.empty() || coplanar(normals, scratch.faces)) return;
     const auto fitted =
         fit_normal_at(mesh, normals, scratch.faces, v, n, limits.max_residual, scratch.samples);
-    if (fitted && fitted->dot(n) > limits.min_cosine) {
-        correction = static_cast<float>(angle_deg(*fitted, n));
-        n = *fitted;
+    if (fitted && fitted->normal.dot(n) > limits.min_cosine) {
+        correction = static_cast<float>(angle_deg(fitted->normal, n));
+        n = fitted->normal;
+        curvature =
+            quadric_from_normal_slope(mesh.positions[v], n, fitted->slope).curvature.cast<float>();
     }
 }
 
@@ -220,8 +235,10 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
         if (bands.face_role[f] == BandRole::None) continue;
         for (Index v : mesh.triangles[f]) needed[v] = 1;
     }
-    FeatureNormals result{std::vector<Vec3>(mesh.vertex_count(), Vec3::Zero()),
-                          std::vector<float>(mesh.vertex_count(), 0.0f)};
+    FeatureNormals result{
+        std::vector<Vec3>(mesh.vertex_count(), Vec3::Zero()),
+        std::vector<float>(mesh.vertex_count(), 0.0f),
+        std::vector<Eigen::Vector3f>(mesh.vertex_count(), Eigen::Vector3f::Zero())};
     tbb::parallel_for(
         tbb::blocked_range<Index>(0, static_cast<Index>(mesh.vertex_count()), 4096),
         [&](const auto& range) {
@@ -236,7 +253,8 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
                 }
                 if (options.estimate == NormalEstimate::LinearFit && !n.isZero(0.0)) {
                     refine_by_fit(mesh, connectivity, face_normals, face_patch, vertex_patch, v,
-                                  fit, n, result.fit_correction_deg[v], scratch);
+                                  fit, n, result.fit_correction_deg[v], result.curvature[v],
+                                  scratch);
                 }
                 result.normal[v] = n;
             }

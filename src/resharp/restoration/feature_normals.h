@@ -1,6 +1,7 @@
 #pragma once
 /// Feature normals at the vertices of edge and corner triangles (paper §5.1, eq. 5.1).
 
+#include <Eigen/Core>
 #include <vector>
 
 #include "resharp/mesh/connectivity.h"
@@ -39,6 +40,10 @@ struct FeatureNormals {
     /// a few degrees on curved features. The split keeps that much margin when it checks that
     /// pieces face the way of their surface.
     std::vector<float> fit_correction_deg;
+    /// Per vertex (#V): the second-order shape of the vertex's own feature from the linear fit,
+    /// a, b, c of LocalQuadric in tangent_frame(normal) (1/mm); zero where the fit was not used
+    /// (planes, eq. 5.1 kept), so there the feature is taken as its tangent plane.
+    std::vector<Eigen::Vector3f> curvature;
 };
 
 /// Per vertex (#V): at each vertex of an edge or corner triangle, N = sum(theta_i N_i) /

@@ -1,8 +1,12 @@
 #include "resharp/restoration/sharp_points.h"
 
+#include <algorithm>
+
 #include "resharp/core/assert.h"
 #include "resharp/core/errors.h"
 #include "resharp/mesh/geometry.h"
+#include "resharp/surfaces/junction.h"
+#include "resharp/surfaces/local_quadric.h"
 
 namespace resharp {
 namespace {
@@ -50,8 +54,66 @@ std::optional<Vec3> corner_point(const Vec3& a, const Vec3& n_a, const Vec3& b, 
 
 namespace {
 
+/// The new points' surfaces: tangent planes or second-order surfaces at band vertices.
+class SideSurfaces {
+public:
+    SideSurfaces(const Mesh& mesh, const FeatureNormals& features, PointPlacement placement)
+        : mesh_(mesh), features_(features), placement_(placement) {}
+
+    /// Where the surfaces of u's and v's features meet nearest the edge's midpoint, starting
+    /// from the tangent planes' point `first_order`.
+    Vec3 edge_point(Index u, Index v, const Vec3& first_order, std::size_t& fallbacks) const {
+        if (placement_ == PointPlacement::TangentPlanes || (flat(u) && flat(v))) return first_order;
+        const Vec3& a = mesh_.positions[u];
+        const Vec3& b = mesh_.positions[v];
+        const double length = (b - a).norm();
+        return accepted(
+            edge_junction(surface(u), surface(v), 0.5 * (a + b), first_order, solver(length)),
+            first_order, length, fallbacks);
+    }
+
+    /// Where the surfaces of the corner triangle t's three vertices meet nearest `first_order`.
+    Vec3 corner_point(const Triangle& t, const Vec3& first_order, std::size_t& fallbacks) const {
+        if (placement_ == PointPlacement::TangentPlanes || (flat(t[0]) && flat(t[1]) && flat(t[2])))
+            return first_order;
+        const double length = std::max({(mesh_.positions[t[1]] - mesh_.positions[t[0]]).norm(),
+                                        (mesh_.positions[t[2]] - mesh_.positions[t[1]]).norm(),
+                                        (mesh_.positions[t[0]] - mesh_.positions[t[2]]).norm()});
+        return accepted(corner_junction(surface(t[0]), surface(t[1]), surface(t[2]), first_order,
+                                        solver(length)),
+                        first_order, length, fallbacks);
+    }
+
+private:
+    bool flat(Index v) const { return features_.curvature[v].isZero(0.0f); }
+
+    LocalQuadric surface(Index v) const {
+        const Vec3& n = features_.normal[v];
+        return {mesh_.positions[v], tangent_frame(n), features_.curvature[v].cast<double>()};
+    }
+
+    /// Lengths in units of the band's edges: converged to 1e-9 of them; a step at most half one.
+    static JunctionSolverOptions solver(double length) {
+        return {.pitch = length, .max_iterations = 20, .tolerance = 1e-9, .max_step = 0.5};
+    }
+
+    /// The second-order point, unless the surfaces did not meet within `length` of the first-
+    /// order point: curvatures fitted on a few faces can put a far meeting that is no edge.
+    static Vec3 accepted(const std::optional<Vec3>& second_order, const Vec3& first_order,
+                         double length, std::size_t& fallbacks) {
+        if (second_order && (*second_order - first_order).norm() <= length) return *second_order;
+        ++fallbacks;
+        return first_order;
+    }
+
+    const Mesh& mesh_;
+    const FeatureNormals& features_;
+    PointPlacement placement_;
+};
+
 void place_edge_points(const Mesh& mesh, const Connectivity& c, const BandClassification& bands,
-                       const std::vector<Vec3>& normals, SharpPoints& out) {
+                       const std::vector<Vec3>& normals, const SideSurfaces& sides,
+                       SharpPoints& out) {
     for (Index h = 0; h < bands.is_crossing.size(); ++h) {
         const Index twin = c.twin[h];
         if (!bands.is_crossing[h] || twin == kNoIndex || twin < h) continue;  // each edge once
@@ -70,7 +132,7 @@ void place_edge_points(const Mesh& mesh, const Connectivity& c, const BandClassi
         }
         out.slots.edge_point[h] = out.slots.edge_point[twin] =
             static_cast<Index>(out.points.size());
-        out.points.push_back(*m);
+        out.points.push_back(sides.edge_point(u, v, *m, out.first_order_fallbacks));
         ++out.edge_points;
     }
 }
@@ -96,8 +158,8 @@ bool is_spike(const Connectivity& c, const std::vector<Vec3>& face_normals,
 
 void place_corner_points(const Mesh& mesh, const Connectivity& c,
                          const std::vector<Vec3>& face_normals, const BandClassification& bands,
-                         const std::vector<Vec3>& normals, double spike_angle_deg,
-                         SharpPoints& out) {
+                         const std::vector<Vec3>& normals, const SideSurfaces& sides,
+                         double spike_angle_deg, SharpPoints& out) {
     for (Index f = 0; f < mesh.face_count(); ++f) {
         if (bands.face_role[f] != BandRole::Corner) continue;
         const Triangle& t = mesh.triangles[f];
@@ -113,7 +175,7 @@ void place_corner_points(const Mesh& mesh, const Connectivity& c,
             continue;
         }
         out.slots.corner_point[f] = static_cast<Index>(out.points.size());
-        out.points.push_back(*m);
+        out.points.push_back(sides.corner_point(t, *m, out.first_order_fallbacks));
         ++out.corner_points;
     }
 }
@@ -147,7 +209,7 @@ bool slots_follow_bands(const Connectivity& c, const BandClassification& bands,
 SharpPoints place_sharp_points(const Mesh& mesh, const Connectivity& connectivity,
                                const std::vector<Vec3>& face_normals,
                                const BandClassification& bands,
-                               const std::vector<Vec3>& feature_normals,
+                               const FeatureNormals& feature_normals,
                                const SharpPointOptions& options) {
     if (!(options.spike_angle_deg > 0.0 && options.spike_angle_deg <= 180.0)) {
         throw InvalidInput("spike angle must lie in (0, 180] degrees");
@@ -155,8 +217,9 @@ SharpPoints place_sharp_points(const Mesh& mesh, const Connectivity& connectivit
     SharpPoints out;
     out.slots.edge_point.assign(connectivity.twin.size(), kNoIndex);
     out.slots.corner_point.assign(mesh.face_count(), kNoIndex);
-    place_edge_points(mesh, connectivity, bands, feature_normals, out);
-    place_corner_points(mesh, connectivity, face_normals, bands, feature_normals,
+    const SideSurfaces sides(mesh, feature_normals, options.placement);
+    place_edge_points(mesh, connectivity, bands, feature_normals.normal, sides, out);
+    place_corner_points(mesh, connectivity, face_normals, bands, feature_normals.normal, sides,
                         options.spike_angle_deg, out);
     RESHARP_EXPENSIVE_ASSERT(slots_follow_bands(connectivity, bands, out));
     return out;

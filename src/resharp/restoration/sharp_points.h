@@ -1,7 +1,9 @@
 #pragma once
-/// New points on the ideal sharp edges and corners (paper §5.2-5.3): one per crossing edge from
-/// the two feature normals (eq. 5.2), one per corner triangle from three (eq. 5.3), each kept
-/// only if it passes the flip test (eq. 5.4-5.5) or the spike test.
+/// New points on the ideal sharp edges and corners (paper §5.2-5.3): one per crossing edge where
+/// the two sides' surfaces meet, one per corner triangle where three meet, each kept only if it
+/// passes the flip test (eq. 5.4-5.5) or the spike test. The sides' surfaces are their tangent
+/// planes (eq. 5.2, 5.3) or, by default, their second-order fits (surfaces/local_quadric.h),
+/// which meet on a curved edge where the planes meet off it.
 
 #include <cstdint>
 #include <optional>
@@ -10,10 +12,22 @@
 #include "resharp/mesh/connectivity.h"
 #include "resharp/mesh/mesh.h"
 #include "resharp/restoration/band_classification.h"
+#include "resharp/restoration/feature_normals.h"
 
 namespace resharp {
 
+/// Which surfaces of the band's sides a new point lies on.
+enum class PointPlacement {
+    /// Eq. 5.2 / 5.3: the feature's tangent planes at the band vertices (the paper).
+    TangentPlanes,
+    /// The features' second-order surfaces (FeatureNormals::curvature) at the band vertices,
+    /// met by Newton's method from the tangent planes' point; that point where they do not meet
+    /// within a crossing edge's length of it.
+    SecondOrder,
+};
+
 struct SharpPointOptions {
+    PointPlacement placement = PointPlacement::SecondOrder;
     /// §5.3: a corner point is refused when two of the normals around the corner triangle
     /// differ by more than this (degrees): nearly opposite normals make a spike.
     double spike_angle_deg = 150.0;
@@ -55,6 +69,9 @@ struct SharpPoints {
         0;  ///< crossing edges failing eq. 5.4 (incl. parallel normals)
     std::size_t refused_by_spike_test = 0;  ///< corner triangles failing the spike test
     std::size_t missing_normal = 0;         ///< crossing edges or corners with an unknown normal
+    /// Points placed on the tangent planes because the second-order surfaces did not meet near
+    /// them (PointPlacement::SecondOrder only).
+    std::size_t first_order_fallbacks = 0;
 };
 
 /// Eq. 5.2: the point on both tangent planes (a, n_a) and (b, n_b) and on the plane through
@@ -71,12 +88,13 @@ bool passes_flip_test(const Vec3& a, const Vec3& n_a, const Vec3& b, const Vec3&
 std::optional<Vec3> corner_point(const Vec3& a, const Vec3& n_a, const Vec3& b, const Vec3& n_b,
                                  const Vec3& c, const Vec3& n_c);
 
-/// Takes the classification and the feature normals (#V) and gives the accepted points.
+/// Takes the classification and the feature normals and curvatures (#V) and gives the accepted
+/// points.
 /// \throws InvalidInput if an option is out of range.
 SharpPoints place_sharp_points(const Mesh& mesh, const Connectivity& connectivity,
                                const std::vector<Vec3>& face_normals,
                                const BandClassification& bands,
-                               const std::vector<Vec3>& feature_normals,
+                               const FeatureNormals& feature_normals,
                                const SharpPointOptions& options = {});
 
 }  // namespace resharp

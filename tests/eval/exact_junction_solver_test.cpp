@@ -1,11 +1,11 @@
-#include "resharp/eval/junction_solver.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
+#include "resharp/eval/exact_surface.h"
 #include "resharp/restoration/sharp_points.h"
+#include "resharp/surfaces/junction.h"
 
 namespace resharp::eval {
 namespace {

@@ -1,18 +1,53 @@
-#include "resharp/eval/junction_solver.h"
+#pragma once
+/// Where implicit surfaces meet: the point of the curve where two surfaces meet nearest a target
+/// (a crossing edge's ideal point), and the point where three meet (a corner's). Both are found
+/// by bounded Newton iterations with a convergence check, never by sampling. Used on the exact
+/// surfaces of a part (eval/exact_junctions.h) and on surfaces fitted to a mesh
+/// (surfaces/local_quadric.h), so one solver places and scores the points.
+///
+/// Templates, because each caller's surface type is its own (the exact forms of the simulator,
+/// a fitted quadric) and is evaluated a few times per point: a virtual call per evaluation would
+/// cost more than the evaluation of a plane.
 
 #include <Eigen/LU>
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <concepts>
+#include <optional>
 
-namespace resharp::eval {
-namespace {
+#include "resharp/core/types.h"
+
+namespace resharp {
+
+/// An implicit function's value and gradient at a point; the surface is where the value is 0.
+struct SurfaceValue {
+    double value = 0.0;
+    Vec3 gradient = Vec3::Zero();
+};
+
+/// A surface given by an implicit function.
+template <class S>
+concept ImplicitFunction = requires(const S& surface, const Vec3& p) {
+    { surface.evaluate(p) } -> std::same_as<SurfaceValue>;
+};
+
+struct JunctionSolverOptions {
+    double pitch = 0.5;       ///< h, mm: the unit of the two lengths below
+    int max_iterations = 60;  ///< bound on Newton steps; no convergence by then is a failure
+    /// In h: converged when every surface's value over its gradient's length (a first-order
+    /// distance from it) and the last step are below this.
+    double tolerance = 1e-8;
+    double max_step = 1.0;  ///< in h: longest single step
+};
+
+namespace junction_detail {
 
 /// Gradients closer to parallel than this (sine of the angle) meet in no single curve.
-constexpr double kMinSine = 1e-6;
+inline constexpr double kMinSine = 1e-6;
 /// The secant slope of lambda is held at or below this: near zero or positive it would send the
 /// step far off (a target near the curve's centre of curvature).
-constexpr double kMaxSlope = -0.1;
+inline constexpr double kMaxSlope = -0.1;
 
 /// The largest first-order distance from p to any of the surfaces (value over gradient length).
 template <std::size_t N>
@@ -25,16 +60,22 @@ double residual(const std::array<SurfaceValue, N>& values) {
     return worst;
 }
 
-Vec3 clamp_length(const Vec3& step, double longest) {
+inline Vec3 clamp_length(const Vec3& step, double longest) {
     const double n = step.norm();
     return n > longest ? Vec3(step * (longest / n)) : step;
 }
 
-}  // namespace
+}  // namespace junction_detail
 
-std::optional<Vec3> edge_junction(const ImplicitSurface& a, const ImplicitSurface& b,
-                                  const Vec3& target, const Vec3& start,
-                                  const JunctionSolverOptions& options) {
+/// Takes two surfaces, a target point and a starting point; gives the point of the curve where
+/// the surfaces meet nearest `target` (a local minimum of the distance, found from `start`), or
+/// nothing if the iteration does not converge within its bound or the surfaces are parallel
+/// there (no single curve). For two planes and the midpoint of a crossing edge as target this
+/// is eq. 5.2's point: on both planes and on the plane through the target normal to their line.
+template <ImplicitFunction A, ImplicitFunction B>
+std::optional<Vec3> edge_junction(const A& a, const B& b, const Vec3& target, const Vec3& start,
+                                  const JunctionSolverOptions& options = {}) {
+    using namespace junction_detail;
     const double h = options.pitch, tolerance = options.tolerance * h;
     const double longest = options.max_step * h;
     Vec3 x = start;
@@ -76,9 +117,13 @@ std::optional<Vec3> edge_junction(const ImplicitSurface& a, const ImplicitSurfac
     return std::nullopt;
 }
 
-std::optional<Vec3> corner_junction(const ImplicitSurface& a, const ImplicitSurface& b,
-                                    const ImplicitSurface& c, const Vec3& start,
-                                    const JunctionSolverOptions& options) {
+/// Takes three surfaces and a starting point; gives the point where all three meet nearest
+/// `start` by Newton's method, or nothing if it does not converge within its bound or two of
+/// the surfaces are parallel there.
+template <ImplicitFunction A, ImplicitFunction B, ImplicitFunction C>
+std::optional<Vec3> corner_junction(const A& a, const B& b, const C& c, const Vec3& start,
+                                    const JunctionSolverOptions& options = {}) {
+    using namespace junction_detail;
     const double h = options.pitch, tolerance = options.tolerance * h;
     Vec3 x = start;
     for (int k = 0; k < options.max_iterations; ++k) {
@@ -95,4 +140,4 @@ std::optional<Vec3> corner_junction(const ImplicitSurface& a, const ImplicitSurf
     return std::nullopt;
 }
 
-}  // namespace resharp::eval
+}  // namespace resharp
