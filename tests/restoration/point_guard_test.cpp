@@ -91,5 +91,53 @@ TEST(Guard, RepairsStayWithinTheirBoundWhenEveryPointIsWrong) {
     }
 }
 
+/// A later round's guard, which guards again only the parts of the band that lost a point, gives
+/// what a full guard gives for the same withdrawals: slots, counts and repairs, over two rounds
+/// of random withdrawals from jittered points (which need many repairs to start with).
+TEST(Guard, AGuardAgainEqualsAFullGuard) {
+    const test::SampledShape shape = test::sampled_drilled_plate();
+    const Detection d = detect_bands(shape.mesh, build_connectivity(shape.mesh), {});
+    const InputSurface surface = d.surface(shape.mesh);
+    SharpPoints points = place_sharp_points(shape.mesh, d.connectivity, d.normals.face, d.bands,
+                                            d.feature_normals.normal);
+    std::mt19937 random(11);
+    std::normal_distribution<double> jitter(0.0, 0.3 * shape.pitch);
+    for (Vec3& p : points.points) p += Vec3(jitter(random), jitter(random), jitter(random));
+    GuardedPoints last = guard_points(surface, d.feature_normals, points, {});
+    ASSERT_GT(last.report.repairs, 10u);
+    std::vector<std::uint8_t> before, now(points.points.size(), 0);
+    std::bernoulli_distribution withdraw(0.05);
+    for (int round = 0; round < 2; ++round) {
+        for (std::uint8_t& w : now) w = w || withdraw(random);
+        const GuardedPoints full = guard_points(surface, d.feature_normals, points, now);
+        const GuardedPoints again =
+            guard_points_again(surface, d.feature_normals, points, last, before, now);
+        EXPECT_EQ(again.accepted.edge_point, full.accepted.edge_point) << "round " << round;
+        EXPECT_EQ(again.accepted.corner_point, full.accepted.corner_point) << "round " << round;
+        EXPECT_EQ(again.report.refused_by_quality, full.report.refused_by_quality);
+        EXPECT_EQ(again.report.refused_by_guard, full.report.refused_by_guard);
+        EXPECT_EQ(again.report.repairs, full.report.repairs);
+        EXPECT_EQ(again.repairs.size(), full.repairs.size());
+        before = now;
+        last = again;
+    }
+    // A withdrawal changes something, or the test would prove nothing.
+    EXPECT_NE(last.accepted.edge_point,
+              guard_points(surface, d.feature_normals, points, {}).accepted.edge_point);
+}
+
+TEST(Guard, AGuardAgainChecksItsFlags) {
+    const test::Strip s = test::make_strip();
+    const SharpPoints points = test::points_on_edge_a1_b0(s);
+    const GuardedPoints first = guard(s, points);
+    const std::vector<std::uint8_t> one{1}, wrong_size{1, 0};
+    EXPECT_FALSE(guard_points_again(s.surface(), s.feature_normals, points, first, {}, one)
+                     .accepted.has_points(0));
+    EXPECT_THROW(guard_points_again(s.surface(), s.feature_normals, points, first, wrong_size, one),
+                 InvalidInput);
+    EXPECT_THROW(guard_points_again(s.surface(), s.feature_normals, points, first, {}, wrong_size),
+                 InvalidInput);
+}
+
 }  // namespace
 }  // namespace resharp

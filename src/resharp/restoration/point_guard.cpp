@@ -235,6 +235,40 @@ private:
     std::vector<std::uint8_t> snapped_;  ///< per half-edge (#3F): its edge was snapped once
 };
 
+/// Every slot of `accepted` holds the point it held among the candidates, its face's corner
+/// point (a snapped edge), or none: the guard only takes away.
+[[maybe_unused]] bool only_takes_away(const PointSlots& accepted, const SharpPoints& candidates,
+                                      const Connectivity& c) {
+    for (Index h = 0; h < accepted.edge_point.size(); ++h) {
+        const Index id = accepted.edge_point[h];
+        if (id == kNoIndex || id == candidates.slots.edge_point[h]) continue;
+        const Index twin = c.twin[h];
+        const bool is_corner_of_a_face =
+            id == candidates.slots.corner_point[face_of(h)] ||
+            (twin != kNoIndex && id == candidates.slots.corner_point[face_of(twin)]);
+        if (!is_corner_of_a_face) return false;
+    }
+    for (Index f = 0; f < accepted.corner_point.size(); ++f) {
+        const Index id = accepted.corner_point[f];
+        if (id != kNoIndex && id != candidates.slots.corner_point[f]) return false;
+    }
+    return true;
+}
+
+/// Whether point p was withdrawn (an empty list withdraws none).
+bool is_withdrawn(std::span<const std::uint8_t> withdrawn, Index p) {
+    return !withdrawn.empty() && withdrawn[p] != 0;
+}
+
+/// Face f's candidate slots less the withdrawn points, written into `slots`.
+void start_face(const SharpPoints& candidates, std::span<const std::uint8_t> withdrawn, Index f,
+                PointSlots& slots) {
+    auto kept = [&](Index p) { return p == kNoIndex || is_withdrawn(withdrawn, p) ? kNoIndex : p; };
+    for (Index h = 3 * f; h < 3 * f + 3; ++h)
+        slots.edge_point[h] = kept(candidates.slots.edge_point[h]);
+    slots.corner_point[f] = kept(candidates.slots.corner_point[f]);
+}
+
 /// The candidates' slots less the withdrawn points.
 PointSlots starting_slots(const SharpPoints& candidates, std::span<const std::uint8_t> withdrawn) {
     PointSlots slots = candidates.slots;
@@ -256,31 +290,72 @@ std::vector<Index> faces_with_points(const PointSlots& slots) {
     return faces;
 }
 
-/// Every slot of `accepted` holds the point it held among the candidates, its face's corner
-/// point (a snapped edge), or none: the guard only takes away.
-[[maybe_unused]] bool only_takes_away(const PointSlots& accepted, const SharpPoints& candidates,
-                                      const Connectivity& c) {
-    for (Index h = 0; h < accepted.edge_point.size(); ++h) {
-        const Index id = accepted.edge_point[h];
-        if (id == kNoIndex || id == candidates.slots.edge_point[h]) continue;
-        const Index twin = c.twin[h];
-        const bool is_corner_of_a_face =
-            id == candidates.slots.corner_point[face_of(h)] ||
-            (twin != kNoIndex && id == candidates.slots.corner_point[face_of(twin)]);
-        if (!is_corner_of_a_face) return false;
+/// The faces to guard again after more points were withdrawn: those that had points at the
+/// last run's start (candidates less `before`) and are connected, across edges between such
+/// faces, to one that lost a point since (one of `now` but not of `before`); ascending.
+/// Bound: each face joins the list once, and is looked at from its three edges.
+std::vector<Index> faces_to_guard_again(const Connectivity& c, const PointSlots& candidates,
+                                        std::span<const std::uint8_t> before,
+                                        std::span<const std::uint8_t> now) {
+    auto had_points = [&](Index f) {
+        bool any = false;
+        candidates.for_each_point(f, [&](Index p) { any = any || !is_withdrawn(before, p); });
+        return any;
+    };
+    std::vector<std::uint8_t> marked(candidates.corner_point.size(), 0);
+    std::vector<Index> faces;
+    for (Index f = 0; f < marked.size(); ++f) {
+        if (!candidates.has_points(f)) continue;
+        bool lost = false;
+        candidates.for_each_point(
+            f, [&](Index p) { lost = lost || (now[p] != 0 && !is_withdrawn(before, p)); });
+        if (!lost) continue;
+        marked[f] = 1;
+        faces.push_back(f);
     }
-    for (Index f = 0; f < accepted.corner_point.size(); ++f) {
-        const Index id = accepted.corner_point[f];
-        if (id != kNoIndex && id != candidates.slots.corner_point[f]) return false;
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+        for (Index k = 0; k < 3; ++k) {
+            const Index twin = c.twin[3 * faces[i] + k];
+            if (twin == kNoIndex || marked[face_of(twin)] || !had_points(face_of(twin))) continue;
+            marked[face_of(twin)] = 1;
+            faces.push_back(face_of(twin));
+        }
     }
-    return true;
+    std::sort(faces.begin(), faces.end());
+    return faces;
 }
 
-}  // namespace
+/// Checks the faces of `first` (ascending) and repairs the faulty ones, appending each repair
+/// to `log`. Bound: a face is popped once at the start and once per repair of a face across
+/// one of its edges; repairs are bounded as Repairs says (GuardReport::repairs).
+void repair_faults(const Connectivity& c, std::span<const Index> first, Repairs& repairs,
+                   std::vector<GuardRepair>& log) {
+    Worklist work(repairs.slots().corner_point.size(), first);
+    while (!work.empty()) {
+        const Index f = work.pop();
+        if (!repairs.slots().has_points(f)) continue;
+        const Fault fault = repairs.fault_of(f);
+        if (fault == Fault::None) continue;
+        const std::size_t dropped = repairs.repair(f);
+        log.push_back({f, fault == Fault::Quality, static_cast<std::uint32_t>(dropped)});
+        for (Index k = 0; k < 3; ++k) {
+            const Index twin = c.twin[3 * f + k];
+            if (twin != kNoIndex) work.push(face_of(twin));
+        }
+    }
+}
 
-GuardedPoints guard_points(const InputSurface& input, const FeatureNormals& feature_normals,
-                           const SharpPoints& candidates, std::span<const std::uint8_t> withdrawn,
-                           const GuardOptions& options) {
+GuardReport report_of(const std::vector<GuardRepair>& log) {
+    GuardReport report;
+    for (const GuardRepair& r : log) {
+        (r.by_quality ? report.refused_by_quality : report.refused_by_guard) += r.dropped;
+    }
+    report.repairs = log.size();
+    return report;
+}
+
+void validate(const GuardOptions& options, const SharpPoints& candidates,
+              std::span<const std::uint8_t> withdrawn) {
     if (!(options.thin_material_angle_deg > 0.0 && options.thin_material_angle_deg <= 180.0)) {
         throw InvalidInput("guard: thin-material angle must lie in (0, 180] degrees");
     }
@@ -288,32 +363,60 @@ GuardedPoints guard_points(const InputSurface& input, const FeatureNormals& feat
         throw InvalidInput("guard: " + std::to_string(withdrawn.size()) + " withdrawal flags for " +
                            std::to_string(candidates.points.size()) + " points");
     }
+}
+
+/// The guard on `slots`, starting from the faces `first` (ascending); `log` holds the repairs
+/// kept from an earlier run, if any.
+GuardedPoints guard_slots(const InputSurface& input, const FeatureNormals& feature_normals,
+                          const SharpPoints& candidates, PointSlots slots,
+                          std::span<const Index> first, std::vector<GuardRepair> log,
+                          const GuardOptions& options) {
     const PieceVertices ids(input.mesh, candidates.points);
     const ReferenceNormals reference{feature_normals, input.normals.vertex};
     const PieceJudge judge(input, reference, ids, options.thin_material_angle_deg);
-    Repairs repairs(input.connectivity, starting_slots(candidates, withdrawn), judge);
-    const std::vector<Index> touched = faces_with_points(repairs.slots());
-
-    // Bound: a face is popped once at the start and once per repair of a face across one of
-    // its edges; repairs are bounded as Repairs says (GuardReport::repairs).
-    GuardReport report;
-    Worklist work(input.mesh.face_count(), touched);
-    while (!work.empty()) {
-        const Index f = work.pop();
-        if (!repairs.slots().has_points(f)) continue;
-        const Fault fault = repairs.fault_of(f);
-        if (fault == Fault::None) continue;
-        (fault == Fault::Quality ? report.refused_by_quality : report.refused_by_guard) +=
-            repairs.repair(f);
-        ++report.repairs;
-        for (Index k = 0; k < 3; ++k) {
-            const Index twin = input.connectivity.twin[3 * f + k];
-            if (twin != kNoIndex) work.push(face_of(twin));
-        }
-    }
-    GuardedPoints out{repairs.slots(), report};
+    Repairs repairs(input.connectivity, std::move(slots), judge);
+    repair_faults(input.connectivity, first, repairs, log);
+    GuardedPoints out{repairs.slots(), report_of(log), std::move(log)};
     RESHARP_EXPENSIVE_ASSERT(only_takes_away(out.accepted, candidates, input.connectivity));
     return out;
+}
+
+}  // namespace
+
+GuardedPoints guard_points(const InputSurface& input, const FeatureNormals& feature_normals,
+                           const SharpPoints& candidates, std::span<const std::uint8_t> withdrawn,
+                           const GuardOptions& options) {
+    validate(options, candidates, withdrawn);
+    PointSlots slots = starting_slots(candidates, withdrawn);
+    const std::vector<Index> first = faces_with_points(slots);
+    return guard_slots(input, feature_normals, candidates, std::move(slots), first, {}, options);
+}
+
+GuardedPoints guard_points_again(const InputSurface& input, const FeatureNormals& feature_normals,
+                                 const SharpPoints& candidates, const GuardedPoints& previous,
+                                 std::span<const std::uint8_t> withdrawn_before,
+                                 std::span<const std::uint8_t> withdrawn,
+                                 const GuardOptions& options) {
+    validate(options, candidates, withdrawn_before);
+    validate(options, candidates, withdrawn);
+    if (withdrawn.empty()) return guard_points(input, feature_normals, candidates, {}, options);
+    const std::vector<Index> again =
+        faces_to_guard_again(input.connectivity, candidates.slots, withdrawn_before, withdrawn);
+    std::vector<std::uint8_t> is_again(input.mesh.face_count(), 0);
+    for (Index f : again) is_again[f] = 1;
+    // The parts guarded again start from the candidates; the others keep what they came to.
+    PointSlots slots = previous.accepted;
+    std::vector<Index> first;
+    for (Index f : again) {
+        start_face(candidates, withdrawn, f, slots);
+        if (slots.has_points(f)) first.push_back(f);
+    }
+    std::vector<GuardRepair> kept;
+    for (const GuardRepair& r : previous.repairs) {
+        if (!is_again[r.face]) kept.push_back(r);
+    }
+    return guard_slots(input, feature_normals, candidates, std::move(slots), first, std::move(kept),
+                       options);
 }
 
 }  // namespace resharp

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "resharp/restoration/feature_normals.h"
 #include "resharp/restoration/input_surface.h"
@@ -31,9 +32,19 @@ struct GuardReport {
     std::size_t repairs = 0;
 };
 
+/// One repair as the guard made it.
+struct GuardRepair {
+    Index face = kNoIndex;      ///< the face repaired
+    bool by_quality = false;    ///< its fault: quality (true) or the guard's own (false)
+    std::uint32_t dropped = 0;  ///< points it dropped
+};
+
 struct GuardedPoints {
     PointSlots accepted;  ///< the candidates' slots with the refused points cleared
-    GuardReport report;
+    GuardReport report;   ///< the sums of `repairs`
+    /// Every repair made, in the order made: what a later round's guard_points_again() keeps of
+    /// the faces it need not guard again.
+    std::vector<GuardRepair> repairs;
 };
 
 /// Takes the input surface, the feature normals with their fit corrections (#V), the placed
@@ -45,5 +56,20 @@ struct GuardedPoints {
 GuardedPoints guard_points(const InputSurface& input, const FeatureNormals& feature_normals,
                            const SharpPoints& candidates, std::span<const std::uint8_t> withdrawn,
                            const GuardOptions& options = {});
+
+/// A later round's guard: takes what guard_points() takes, the result `previous` it gave for
+/// the withdrawal flags `withdrawn_before` (empty: none), and the flags `withdrawn` now (a
+/// superset); gives exactly what guard_points() gives for `withdrawn` (slots, report and
+/// repairs), guarding again only the faces whose work can differ. The guard's work on faces
+/// with points splits into independent parts, the sets connected across edges between such
+/// faces (a repair reads and writes the slots of one face and of the faces across its edges),
+/// and a part none of whose faces lost a point since keeps its slots and repairs.
+/// 	hrows InvalidInput as guard_points() does, and if `withdrawn_before` is neither empty nor
+///         one flag per candidate point.
+GuardedPoints guard_points_again(const InputSurface& input, const FeatureNormals& feature_normals,
+                                 const SharpPoints& candidates, const GuardedPoints& previous,
+                                 std::span<const std::uint8_t> withdrawn_before,
+                                 std::span<const std::uint8_t> withdrawn,
+                                 const GuardOptions& options = {});
 
 }  // namespace resharp
