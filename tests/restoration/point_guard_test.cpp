@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <numeric>
 #include <random>
 
 #include "resharp/core/errors.h"
@@ -106,12 +107,14 @@ TEST(Guard, AGuardAgainEqualsAFullGuard) {
     GuardedPoints last = guard_points(surface, d.feature_normals, points, {});
     ASSERT_GT(last.report.repairs, 10u);
     std::vector<std::uint8_t> before, now(points.points.size(), 0);
+    std::vector<Index> every_face(shape.mesh.face_count());
+    std::iota(every_face.begin(), every_face.end(), Index{0});
     std::bernoulli_distribution withdraw(0.05);
     for (int round = 0; round < 2; ++round) {
         for (std::uint8_t& w : now) w = w || withdraw(random);
         const GuardedPoints full = guard_points(surface, d.feature_normals, points, now);
         const GuardedPoints again =
-            guard_points_again(surface, d.feature_normals, points, last, before, now);
+            guard_points_again(surface, d.feature_normals, points, last, before, now, every_face);
         EXPECT_EQ(again.accepted.edge_point, full.accepted.edge_point) << "round " << round;
         EXPECT_EQ(again.accepted.corner_point, full.accepted.corner_point) << "round " << round;
         EXPECT_EQ(again.report.refused_by_quality, full.report.refused_by_quality);
@@ -131,11 +134,16 @@ TEST(Guard, AGuardAgainChecksItsFlags) {
     const SharpPoints points = test::points_on_edge_a1_b0(s);
     const GuardedPoints first = guard(s, points);
     const std::vector<std::uint8_t> one{1}, wrong_size{1, 0};
-    EXPECT_FALSE(guard_points_again(s.surface(), s.feature_normals, points, first, {}, one)
+    const std::vector<Index> face_0{0}, face_9{9};
+    EXPECT_FALSE(guard_points_again(s.surface(), s.feature_normals, points, first, {}, one, face_0)
                      .accepted.has_points(0));
-    EXPECT_THROW(guard_points_again(s.surface(), s.feature_normals, points, first, wrong_size, one),
-                 InvalidInput);
-    EXPECT_THROW(guard_points_again(s.surface(), s.feature_normals, points, first, {}, wrong_size),
+    EXPECT_THROW(
+        guard_points_again(s.surface(), s.feature_normals, points, first, wrong_size, one, face_0),
+        InvalidInput);
+    EXPECT_THROW(
+        guard_points_again(s.surface(), s.feature_normals, points, first, {}, wrong_size, face_0),
+        InvalidInput);
+    EXPECT_THROW(guard_points_again(s.surface(), s.feature_normals, points, first, {}, one, face_9),
                  InvalidInput);
 }
 

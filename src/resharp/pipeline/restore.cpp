@@ -191,6 +191,7 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
     });
     std::vector<std::uint8_t> withdrawn(r.points.points.size(), 0);
     std::vector<std::uint8_t> withdrawn_before;  // the flags of the last round's guard
+    std::vector<Index> harmful;                  // the faces the last check found harmful
     GuardedPoints checked;                       // the last round's guard, its split checked
     // Bound: max_harm_rounds; and every round that does not end the loop withdraws at least one
     // point (harmful faces are split faces, which hold points).
@@ -199,9 +200,10 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
         clock.run(Stage::Guard, [&] {
             // Nothing is withdrawn before the first check: no flags to read. Later rounds guard
             // again only the faces whose work the withdrawn points can change.
-            guarded = round == 0 ? guard_points(input, feature_normals, r.points, {}, options.guard)
-                                 : guard_points_again(input, feature_normals, r.points, checked,
-                                                      withdrawn_before, withdrawn, options.guard);
+            guarded = round == 0
+                          ? guard_points(input, feature_normals, r.points, {}, options.guard)
+                          : guard_points_again(input, feature_normals, r.points, checked,
+                                               withdrawn_before, withdrawn, harmful, options.guard);
             RESHARP_EXPENSIVE_ASSERT(
                 round == 0 ||
                 guarded.accepted.edge_point ==
@@ -238,6 +240,7 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
         [[maybe_unused]] const std::size_t before = r.undone_points;
         withdrawn_before = withdrawn;
         withdraw_points_of(harm.harmful_faces, checked.accepted, withdrawn, r.undone_points);
+        harmful = std::move(harm.harmful_faces);
         RESHARP_ASSERT(r.undone_points > before);
     }
     r.rounds_exhausted = true;

@@ -260,13 +260,15 @@ bool is_withdrawn(std::span<const std::uint8_t> withdrawn, Index p) {
     return !withdrawn.empty() && withdrawn[p] != 0;
 }
 
-/// Face f's candidate slots less the withdrawn points, written into `slots`.
+/// Face f's candidate slots less the withdrawn points, written into the slots of face `into`
+/// of `slots`.
 void start_face(const SharpPoints& candidates, std::span<const std::uint8_t> withdrawn, Index f,
-                PointSlots& slots) {
+                PointSlots& slots, Index into) {
     auto kept = [&](Index p) { return p == kNoIndex || is_withdrawn(withdrawn, p) ? kNoIndex : p; };
-    for (Index h = 3 * f; h < 3 * f + 3; ++h)
-        slots.edge_point[h] = kept(candidates.slots.edge_point[h]);
-    slots.corner_point[f] = kept(candidates.slots.corner_point[f]);
+    for (Index k = 0; k < 3; ++k) {
+        slots.edge_point[3 * into + k] = kept(candidates.slots.edge_point[3 * f + k]);
+    }
+    slots.corner_point[into] = kept(candidates.slots.corner_point[f]);
 }
 
 /// The candidates' slots less the withdrawn points.
@@ -290,39 +292,86 @@ std::vector<Index> faces_with_points(const PointSlots& slots) {
     return faces;
 }
 
-/// The faces to guard again after more points were withdrawn: those that had points at the
-/// last run's start (candidates less `before`) and are connected, across edges between such
-/// faces, to one that lost a point since (one of `now` but not of `before`); ascending.
+/// Whether the slots of face fa in `a` are those of face fb in `b`.
+bool same_slots(const PointSlots& a, Index fa, const PointSlots& b, Index fb) {
+    return a.corner_point[fa] == b.corner_point[fb] &&
+           std::equal(a.edge_point.begin() + 3 * fa, a.edge_point.begin() + 3 * fa + 3,
+                      b.edge_point.begin() + 3 * fb);
+}
+
+/// The faces a later guard run works on again, ascending, and per face (#F) 1 for those on
+/// the border of that region (see faces_to_guard_again).
+struct GuardAgain {
+    std::vector<Index> faces;
+    std::vector<std::uint8_t> is_border;
+};
+
+/// The faces to guard again after more points were withdrawn: the faces that had points at the
+/// last run's start (candidates less `before`) reached, across edges between such faces, from
+/// one that lost a point since (one of `now` but not of `before`; every such face is one of
+/// `holders` or lies across an edge of one). The search stops at the faces the last run left
+/// alone (never repaired, slots as they started), which become the border, unless
+/// `expand_anyway` (#F) marks them. A repair of a border face, or a change to its slots, is the
+/// only way the faces beyond can be drawn in (they push only their neighbours, and pushing a
+/// face left alone does nothing), so the region suffices if the run leaves its border alone.
 /// Bound: each face joins the list once, and is looked at from its three edges.
-std::vector<Index> faces_to_guard_again(const Connectivity& c, const PointSlots& candidates,
-                                        std::span<const std::uint8_t> before,
-                                        std::span<const std::uint8_t> now) {
+GuardAgain faces_to_guard_again(const Connectivity& c, const SharpPoints& candidates,
+                                const GuardedPoints& previous, std::span<const std::uint8_t> before,
+                                std::span<const std::uint8_t> now, std::span<const Index> holders,
+                                const std::vector<std::uint8_t>& expand_anyway) {
+    const PointSlots& slots = candidates.slots;
+    const std::size_t face_count = slots.corner_point.size();
     auto had_points = [&](Index f) {
         bool any = false;
-        candidates.for_each_point(f, [&](Index p) { any = any || !is_withdrawn(before, p); });
+        slots.for_each_point(f, [&](Index p) { any = any || !is_withdrawn(before, p); });
         return any;
     };
-    std::vector<std::uint8_t> marked(candidates.corner_point.size(), 0);
-    std::vector<Index> faces;
-    for (Index f = 0; f < marked.size(); ++f) {
-        if (!candidates.has_points(f)) continue;
+    auto lost_a_point = [&](Index f) {
         bool lost = false;
-        candidates.for_each_point(
+        slots.for_each_point(
             f, [&](Index p) { lost = lost || (now[p] != 0 && !is_withdrawn(before, p)); });
-        if (!lost) continue;
+        return lost;
+    };
+    std::vector<std::uint8_t> repaired(face_count, 0);
+    for (const GuardRepair& r : previous.repairs) repaired[r.face] = 1;
+    PointSlots started{std::vector<Index>(3), std::vector<Index>(1)};  // one face's start
+    auto left_alone = [&](Index f) {
+        if (repaired[f] || expand_anyway[f]) return false;
+        start_face(candidates, before, f, started, 0);
+        return same_slots(started, 0, previous.accepted, f);
+    };
+    GuardAgain again{{}, std::vector<std::uint8_t>(face_count, 0)};
+    std::vector<std::uint8_t> marked(face_count, 0);
+    std::vector<Index> expand;  // the faces whose neighbours join
+    auto seed = [&](Index f) {
+        if (marked[f] || !lost_a_point(f)) return;
         marked[f] = 1;
-        faces.push_back(f);
-    }
-    for (std::size_t i = 0; i < faces.size(); ++i) {
+        expand.push_back(f);
+    };
+    for (Index f : holders) {
+        seed(f);
         for (Index k = 0; k < 3; ++k) {
-            const Index twin = c.twin[3 * faces[i] + k];
-            if (twin == kNoIndex || marked[face_of(twin)] || !had_points(face_of(twin))) continue;
-            marked[face_of(twin)] = 1;
-            faces.push_back(face_of(twin));
+            if (c.twin[3 * f + k] != kNoIndex) seed(face_of(c.twin[3 * f + k]));
         }
     }
-    std::sort(faces.begin(), faces.end());
-    return faces;
+    again.faces = expand;
+    for (std::size_t i = 0; i < expand.size(); ++i) {
+        for (Index k = 0; k < 3; ++k) {
+            const Index twin = c.twin[3 * expand[i] + k];
+            if (twin == kNoIndex) continue;
+            const Index g = face_of(twin);
+            if (marked[g] || !had_points(g)) continue;
+            marked[g] = 1;
+            again.faces.push_back(g);
+            if (left_alone(g)) {
+                again.is_border[g] = 1;
+            } else {
+                expand.push_back(g);
+            }
+        }
+    }
+    std::sort(again.faces.begin(), again.faces.end());
+    return again;
 }
 
 /// Checks the faces of `first` (ascending) and repairs the faulty ones, appending each repair
@@ -396,27 +445,55 @@ GuardedPoints guard_points_again(const InputSurface& input, const FeatureNormals
                                  const SharpPoints& candidates, const GuardedPoints& previous,
                                  std::span<const std::uint8_t> withdrawn_before,
                                  std::span<const std::uint8_t> withdrawn,
-                                 const GuardOptions& options) {
+                                 std::span<const Index> holders, const GuardOptions& options) {
     validate(options, candidates, withdrawn_before);
     validate(options, candidates, withdrawn);
+    for (Index f : holders) {
+        if (f >= input.mesh.face_count()) {
+            throw InvalidInput("guard: holder face " + std::to_string(f) + " of " +
+                               std::to_string(input.mesh.face_count()));
+        }
+    }
     if (withdrawn.empty()) return guard_points(input, feature_normals, candidates, {}, options);
-    const std::vector<Index> again =
-        faces_to_guard_again(input.connectivity, candidates.slots, withdrawn_before, withdrawn);
-    std::vector<std::uint8_t> is_again(input.mesh.face_count(), 0);
-    for (Index f : again) is_again[f] = 1;
-    // The parts guarded again start from the candidates; the others keep what they came to.
-    PointSlots slots = previous.accepted;
-    std::vector<Index> first;
-    for (Index f : again) {
-        start_face(candidates, withdrawn, f, slots);
-        if (slots.has_points(f)) first.push_back(f);
+    auto guard_region = [&](const GuardAgain& again) {
+        std::vector<std::uint8_t> is_again(input.mesh.face_count(), 0);
+        for (Index f : again.faces) is_again[f] = 1;
+        // The region starts from the candidates; the faces beyond keep what they came to.
+        PointSlots slots = previous.accepted;
+        std::vector<Index> first;
+        for (Index f : again.faces) {
+            start_face(candidates, withdrawn, f, slots, f);
+            if (slots.has_points(f)) first.push_back(f);
+        }
+        std::vector<GuardRepair> kept;
+        for (const GuardRepair& r : previous.repairs) {
+            if (!is_again[r.face]) kept.push_back(r);
+        }
+        return guard_slots(input, feature_normals, candidates, std::move(slots), first,
+                           std::move(kept), options);
+    };
+    // Guarded again until the run leaves the border alone, each time with the border faces it
+    // did not leave alone searched across. Bound: every retry adds one of those faces to
+    // `expand_anyway`, so there are at most as many retries as faces.
+    std::vector<std::uint8_t> expand_anyway(input.mesh.face_count(), 0);
+    for (;;) {
+        const GuardAgain region =
+            faces_to_guard_again(input.connectivity, candidates, previous, withdrawn_before,
+                                 withdrawn, holders, expand_anyway);
+        GuardedPoints out = guard_region(region);
+        bool border_left_alone = true;
+        for (const GuardRepair& r : out.repairs) {
+            if (!region.is_border[r.face]) continue;
+            expand_anyway[r.face] = 1;
+            border_left_alone = false;
+        }
+        for (Index f : region.faces) {
+            if (!region.is_border[f] || same_slots(out.accepted, f, previous.accepted, f)) continue;
+            expand_anyway[f] = 1;
+            border_left_alone = false;
+        }
+        if (border_left_alone) return out;
     }
-    std::vector<GuardRepair> kept;
-    for (const GuardRepair& r : previous.repairs) {
-        if (!is_again[r.face]) kept.push_back(r);
-    }
-    return guard_slots(input, feature_normals, candidates, std::move(slots), first, std::move(kept),
-                       options);
 }
 
 }  // namespace resharp

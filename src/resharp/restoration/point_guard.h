@@ -58,18 +58,21 @@ GuardedPoints guard_points(const InputSurface& input, const FeatureNormals& feat
                            const GuardOptions& options = {});
 
 /// A later round's guard: takes what guard_points() takes, the result `previous` it gave for
-/// the withdrawal flags `withdrawn_before` (empty: none), and the flags `withdrawn` now (a
-/// superset); gives exactly what guard_points() gives for `withdrawn` (slots, report and
-/// repairs), guarding again only the faces whose work can differ. The guard's work on faces
-/// with points splits into independent parts, the sets connected across edges between such
-/// faces (a repair reads and writes the slots of one face and of the faces across its edges),
-/// and a part none of whose faces lost a point since keeps its slots and repairs.
-/// 	hrows InvalidInput as guard_points() does, and if `withdrawn_before` is neither empty nor
+/// the withdrawal flags `withdrawn_before` (empty: none), the flags `withdrawn` now (a
+/// superset), and `holders`, faces whose slots in `previous` held every point withdrawn since
+/// (such as the faces the harm check found harmful); gives exactly what guard_points() gives
+/// for `withdrawn` (slots, report and repairs), guarding again only the faces whose work can
+/// differ. The guard's work on a face reads and writes the slots of the face and of the faces
+/// across its edges and nothing else, so the faces beyond a border of faces the last run left
+/// alone (never repaired, slots as they started) keep their slots and repairs as long as this
+/// run leaves that border alone too; where it does not, the region grows past it and is
+/// guarded again.
+/// \throws InvalidInput as guard_points() does, and if `withdrawn_before` is neither empty nor
 ///         one flag per candidate point.
 GuardedPoints guard_points_again(const InputSurface& input, const FeatureNormals& feature_normals,
                                  const SharpPoints& candidates, const GuardedPoints& previous,
                                  std::span<const std::uint8_t> withdrawn_before,
                                  std::span<const std::uint8_t> withdrawn,
-                                 const GuardOptions& options = {});
+                                 std::span<const Index> holders, const GuardOptions& options = {});
 
 }  // namespace resharp
