@@ -472,11 +472,12 @@ GuardedPoints guard_points_again(const InputSurface& input, const FeatureNormals
         return guard_slots(input, feature_normals, candidates, std::move(slots), first,
                            std::move(kept), options);
     };
-    // Guarded again until the run leaves the border alone, each time with the border faces it
-    // did not leave alone searched across. Bound: every retry adds one of those faces to
-    // `expand_anyway`, so there are at most as many retries as faces.
+    // Guarded again until the run leaves the border alone: a second time with the border
+    // faces it did not leave alone searched across, then (the cascade goes on) with every face
+    // searched across, which stops at no border. Bound: three runs.
     std::vector<std::uint8_t> expand_anyway(input.mesh.face_count(), 0);
-    for (;;) {
+    for (int run = 0;; ++run) {
+        if (run == 2) std::fill(expand_anyway.begin(), expand_anyway.end(), 1);
         const GuardAgain region =
             faces_to_guard_again(input.connectivity, candidates, previous, withdrawn_before,
                                  withdrawn, holders, expand_anyway);
