@@ -109,6 +109,15 @@ std::vector<std::uint8_t> changed_faces(const PointSlots& before, const PointSlo
     return changed;
 }
 
+/// Whether two guard results accept the same slots with the same counts.
+[[maybe_unused]] bool same_guard(const GuardedPoints& a, const GuardedPoints& b) {
+    return a.accepted.edge_point == b.accepted.edge_point &&
+           a.accepted.corner_point == b.accepted.corner_point &&
+           a.report.refused_by_quality == b.report.refused_by_quality &&
+           a.report.refused_by_guard == b.report.refused_by_guard &&
+           a.report.repairs == b.report.repairs;
+}
+
 /// The input as its own split: no face replaced.
 SplitMesh unchanged(const Mesh& mesh) {
     SplitMesh out;
@@ -205,10 +214,8 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
                           : guard_points_again(input, feature_normals, r.points, checked,
                                                withdrawn_before, withdrawn, harmful, options.guard);
             RESHARP_EXPENSIVE_ASSERT(
-                round == 0 ||
-                guarded.accepted.edge_point ==
-                    guard_points(input, feature_normals, r.points, withdrawn, options.guard)
-                        .accepted.edge_point);
+                round == 0 || same_guard(guarded, guard_points(input, feature_normals, r.points,
+                                                               withdrawn, options.guard)));
         });
         r.guard.refused_by_quality += guarded.report.refused_by_quality;
         r.guard.refused_by_guard += guarded.report.refused_by_guard;
