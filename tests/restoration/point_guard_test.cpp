@@ -64,24 +64,35 @@ TEST(Guard, WithdrawnPointsAreNotAccepted) {
     EXPECT_THROW(guard(s, points, wrong_size), InvalidInput);
 }
 
+/// A sampled drilled plate, its detection, and its band points each thrown off its place by a
+/// normal jitter of `spread` pitches per coordinate (from `seed`).
+struct JitteredPlate {
+    test::SampledShape shape = test::sampled_drilled_plate();
+    Detection d = detect_bands(shape.mesh, build_connectivity(shape.mesh), {});
+    SharpPoints points = place_sharp_points(shape.mesh, d.connectivity, d.normals.face, d.bands,
+                                            d.feature_normals.normal);
+
+    JitteredPlate(unsigned seed, double spread) {
+        std::mt19937 random(seed);
+        std::normal_distribution<double> jitter(0.0, spread * shape.pitch);
+        for (Vec3& p : points.points) p += Vec3(jitter(random), jitter(random), jitter(random));
+    }
+    InputSurface surface() const { return d.surface(shape.mesh); }
+};
+
 /// Every point of a sampled drilled plate's bands thrown off its place at random: many faces need
 /// repairs, and the work stays within the bound the guard states (three repairs per slot
 /// holding a point at the start), taking points away only.
 TEST(Guard, RepairsStayWithinTheirBoundWhenEveryPointIsWrong) {
-    const test::SampledShape shape = test::sampled_drilled_plate();
-    const Detection d = detect_bands(shape.mesh, build_connectivity(shape.mesh), {});
-    const InputSurface surface = d.surface(shape.mesh);
-    SharpPoints points = place_sharp_points(shape.mesh, d.connectivity, d.normals.face, d.bands,
-                                            d.feature_normals.normal);
+    const JitteredPlate plate(7, 1.0);
+    const test::SampledShape& shape = plate.shape;
+    const SharpPoints& points = plate.points;
     ASSERT_GT(points.points.size(), 50u);
-    std::mt19937 random(7);
-    std::normal_distribution<double> jitter(0.0, shape.pitch);
-    for (Vec3& p : points.points) p += Vec3(jitter(random), jitter(random), jitter(random));
     std::size_t slots = 0;
     for (Index f = 0; f < shape.mesh.face_count(); ++f) {
         points.slots.for_each_point(f, [&](Index) { ++slots; });
     }
-    const GuardedPoints g = guard_points(surface, d.feature_normals, points, {});
+    const GuardedPoints g = guard_points(plate.surface(), plate.d.feature_normals, points, {});
     EXPECT_GT(g.report.repairs, 20u);
     EXPECT_LE(g.report.repairs, 3 * slots);
     for (Index h = 0; h < g.accepted.edge_point.size(); ++h) {
@@ -96,18 +107,15 @@ TEST(Guard, RepairsStayWithinTheirBoundWhenEveryPointIsWrong) {
 /// what a full guard gives for the same withdrawals: slots, counts and repairs, over two rounds
 /// of random withdrawals from jittered points (which need many repairs to start with).
 TEST(Guard, AGuardAgainEqualsAFullGuard) {
-    const test::SampledShape shape = test::sampled_drilled_plate();
-    const Detection d = detect_bands(shape.mesh, build_connectivity(shape.mesh), {});
-    const InputSurface surface = d.surface(shape.mesh);
-    SharpPoints points = place_sharp_points(shape.mesh, d.connectivity, d.normals.face, d.bands,
-                                            d.feature_normals.normal);
+    const JitteredPlate plate(11, 0.3);
+    const InputSurface surface = plate.surface();
+    const Detection& d = plate.d;
+    const SharpPoints& points = plate.points;
     std::mt19937 random(11);
-    std::normal_distribution<double> jitter(0.0, 0.3 * shape.pitch);
-    for (Vec3& p : points.points) p += Vec3(jitter(random), jitter(random), jitter(random));
     GuardedPoints last = guard_points(surface, d.feature_normals, points, {});
     ASSERT_GT(last.report.repairs, 10u);
     std::vector<std::uint8_t> before, now(points.points.size(), 0);
-    std::vector<Index> every_face(shape.mesh.face_count());
+    std::vector<Index> every_face(plate.shape.mesh.face_count());
     std::iota(every_face.begin(), every_face.end(), Index{0});
     std::bernoulli_distribution withdraw(0.05);
     for (int round = 0; round < 2; ++round) {
