@@ -42,8 +42,8 @@ struct GuardRepair {
 struct GuardedPoints {
     PointSlots accepted;  ///< the candidates' slots with the refused points cleared
     GuardReport report;   ///< the sums of `repairs`
-    /// Every repair made, in the order made: what a later round's guard_points_again() keeps of
-    /// the faces it need not guard again.
+    /// Every repair made, in the order made (guard_points_again(): those it kept first, then
+    /// those it made): what a later round keeps of the faces it need not guard again.
     std::vector<GuardRepair> repairs;
 };
 
@@ -61,14 +61,14 @@ GuardedPoints guard_points(const InputSurface& input, const FeatureNormals& feat
 /// the withdrawal flags `withdrawn_before` (empty: none), the flags `withdrawn` now (a
 /// superset), and `holders`, faces whose slots in `previous` held every point withdrawn since
 /// (such as the faces the harm check found harmful); gives exactly what guard_points() gives
-/// for `withdrawn` (slots, report and repairs), guarding again only the faces whose work can
-/// differ. The guard's work on a face reads and writes the slots of the face and of the faces
-/// across its edges and nothing else, so the faces beyond a border of faces the last run left
-/// alone (never repaired, slots as they started) keep their slots and repairs as long as this
-/// run leaves that border alone too; where it does not, the region grows past it and is
-/// guarded again.
-/// \throws InvalidInput as guard_points() does, and if `withdrawn_before` is neither empty nor
-///         one flag per candidate point.
+/// for `withdrawn` (slots, report, and the same repairs in another order), guarding again only
+/// the faces whose work can differ. The guard's work on a face reads and writes the slots of
+/// the face and of the faces across its edges and nothing else, so the faces beyond a border
+/// of faces the last run left alone (never repaired, slots as they started) keep their slots
+/// and repairs as long as this run leaves that border alone too; where it does not, the region
+/// grows past it and is guarded again.
+/// \throws InvalidInput as guard_points() does, if `withdrawn_before` is neither empty nor one
+///         flag per candidate point, or if a holder is not a face.
 GuardedPoints guard_points_again(const InputSurface& input, const FeatureNormals& feature_normals,
                                  const SharpPoints& candidates, const GuardedPoints& previous,
                                  std::span<const std::uint8_t> withdrawn_before,
