@@ -1,0 +1,24 @@
+#pragma once
+/// One case of the restore() fuzzer (tests/fuzz/restore_fuzzer.cpp), apart from libFuzzer so that
+/// the test suite replays the committed cases (tests/fuzz/corpus/restore) with any compiler.
+///
+/// The bytes pick one of six small parts the simulator makes (tests/support/small_parts.h, 3k to
+/// 8k triangles, by four meshers) and damage it the ways other meshers and exports damage meshes:
+/// jitter, runs of faces dropped, faces duplicated (as they are or turned over) or turned over in
+/// place, vertices merged; they may also set a stop callback that fires at a given question or a
+/// deadline, and the harm rounds allowed. restore() then runs on one thread.
+
+#include <cstdint>
+#include <span>
+#include <string>
+
+namespace resharp::test {
+
+/// Takes any bytes; gives "" when restore() kept every promise, else what it broke: a bound it
+/// states (harm rounds, questions to the stop callback, a deadline missed by more than 3 s), a
+/// stop not giving the input back, an unchanged output that differs from the input, or harm by
+/// the criteria of harm_criteria.h (self-intersections included). Exceptions from restore()
+/// pass through: none is expected.
+std::string restore_fuzz_case(std::span<const std::uint8_t> bytes);
+
+}  // namespace resharp::test
