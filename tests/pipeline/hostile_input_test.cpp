@@ -24,6 +24,7 @@ void expect_no_harm(const Mesh& input, const RestoreResult& r) {
     const test::HarmFound h = test::find_harm(input, r.mesh, r.source_face);
     EXPECT_EQ(h.moved_input_vertices, 0u);
     EXPECT_EQ(h.bad_source_faces, 0u);
+    EXPECT_EQ(h.lost_faces, 0u);
     EXPECT_EQ(h.turned_faces, 0u);
     EXPECT_EQ(h.added_boundary_edges, 0u);
     EXPECT_EQ(h.added_nonmanifold_edges, 0u);

@@ -92,6 +92,37 @@ std::size_t added(std::size_t before, std::size_t after) {
     return after > before ? after - before : 0;
 }
 
+/// The face turned to start at its smallest vertex: equal for exact duplicates.
+Triangle canonical(Triangle t) {
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    return t;
+}
+
+/// The input faces some output face comes from (in input order); counts in `lost` the other
+/// faces that are not a copy of an earlier input face.
+Mesh kept_faces(const Mesh& input, std::span<const Index> source_face, std::size_t& lost) {
+    const std::size_t n = input.face_count();
+    std::vector<std::uint8_t> is_source(n, 0);
+    for (Index s : source_face) is_source[s] = 1;
+    std::vector<Triangle> shape(n);
+    for (std::size_t f = 0; f < n; ++f) shape[f] = canonical(input.triangles[f]);
+    std::vector<Index> order(n);
+    std::iota(order.begin(), order.end(), Index{0});
+    std::stable_sort(order.begin(), order.end(),
+                     [&](Index a, Index b) { return shape[a] < shape[b]; });
+    std::vector<std::uint8_t> is_copy(n, 0);
+    for (std::size_t k = 1; k < n; ++k) is_copy[order[k]] = shape[order[k]] == shape[order[k - 1]];
+    Mesh kept{input.positions, {}};
+    for (std::size_t f = 0; f < n; ++f) {
+        if (is_source[f]) {
+            kept.triangles.push_back(input.triangles[f]);
+        } else {
+            lost += !is_copy[f];
+        }
+    }
+    return kept;
+}
+
 }  // namespace
 
 std::size_t turned_against_nearest(const Mesh& input, const Mesh& output,
@@ -134,7 +165,8 @@ HarmFound find_harm(const Mesh& input, const Mesh& output, std::span<const Index
     h.bad_source_faces = source_face.size() == output.face_count() ? 0 : 1;
     for (Index s : source_face) h.bad_source_faces += s >= input.face_count();
     if (h.bad_source_faces > 0) return h;  // the rest reads the source faces
-    const MeshDiagnostics before = diagnose(input, build_connectivity(input));
+    const Mesh kept = kept_faces(input, source_face, h.lost_faces);
+    const MeshDiagnostics before = diagnose(kept, build_connectivity(kept));
     const MeshDiagnostics after = diagnose(output, build_connectivity(output));
     h.added_boundary_edges = added(before.boundary_edges, after.boundary_edges);
     h.added_nonmanifold_edges = added(before.nonmanifold_edges, after.nonmanifold_edges);

@@ -15,15 +15,19 @@ namespace resharp::test {
 struct HarmFound {
     std::size_t moved_input_vertices = 0;  ///< input vertices not kept bit for bit at their index
     std::size_t bad_source_faces = 0;      ///< output faces whose source face is out of range
-    std::size_t turned_faces = 0;          ///< see turned_against_nearest()
+    /// Input faces no output face comes from that are not a later copy of an exact duplicate
+    /// (same vertices, same orientation) of an earlier input face: faces lost.
+    std::size_t lost_faces = 0;
+    std::size_t turned_faces = 0;  ///< see turned_against_nearest()
     std::size_t added_boundary_edges = 0;
     std::size_t added_nonmanifold_edges = 0;
     std::size_t added_inconsistent_edges = 0;
     std::size_t new_self_intersections = 0;  ///< see new_self_intersections(); 0 when not run
 
     bool any() const {
-        return moved_input_vertices + bad_source_faces + turned_faces + added_boundary_edges +
-                   added_nonmanifold_edges + added_inconsistent_edges + new_self_intersections >
+        return moved_input_vertices + bad_source_faces + lost_faces + turned_faces +
+                   added_boundary_edges + added_nonmanifold_edges + added_inconsistent_edges +
+                   new_self_intersections >
                0;
     }
 };
@@ -48,7 +52,10 @@ struct HarmCriteria {
     bool self_intersections = true;
 };
 
-/// Every criterion on the input, the output and its source faces (#F out).
+/// Every criterion on the input, the output and its source faces (#F out). Edges are counted
+/// against the input less the exact duplicates restore() removes (MeshRepairOptions): removing
+/// the third face of an edge may leave two that disagree on orientation, a defect the input
+/// had under another name.
 HarmFound find_harm(const Mesh& input, const Mesh& output, std::span<const Index> source_face,
                     const HarmCriteria& criteria = {});
 

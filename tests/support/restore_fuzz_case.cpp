@@ -125,15 +125,8 @@ std::size_t question_bound(std::size_t rounds) { return kStageCount + 3 * (round
 /// takes well under a second, even with the sanitizers.
 constexpr std::chrono::seconds kDeadlineGrace{3};
 
-/// What a case asks of restore() besides the mesh.
-struct Request {
-    RestoreOptions options;
-    std::size_t stop_at = 0;  ///< the question the stop callback says yes to; 0: never
-    std::optional<std::chrono::milliseconds> deadline;
-};
-
 /// Damages `mesh` and fills `request` as the bytes say.
-void read_case(ByteReader& in, const Seed& seed, Mesh& mesh, Request& request) {
+void read_case(ByteReader& in, const Seed& seed, Mesh& mesh, RestoreFuzzInput& request) {
     request.options.threads = 1;
     request.options.max_harm_rounds = static_cast<int>(in.integer(1, 8));
     std::mt19937 random(static_cast<std::uint32_t>(in.integer(0, 65535)));
@@ -185,8 +178,9 @@ std::string harm_problem(const Mesh& input, const RestoreResult& r) {
     const HarmFound h = find_harm(input, r.mesh, r.source_face);
     if (!h.any()) return "";
     return "harm: moved " + std::to_string(h.moved_input_vertices) + ", bad sources " +
-           std::to_string(h.bad_source_faces) + ", turned " + std::to_string(h.turned_faces) +
-           ", boundary +" + std::to_string(h.added_boundary_edges) + ", non-manifold +" +
+           std::to_string(h.bad_source_faces) + ", lost faces " + std::to_string(h.lost_faces) +
+           ", turned " + std::to_string(h.turned_faces) + ", boundary +" +
+           std::to_string(h.added_boundary_edges) + ", non-manifold +" +
            std::to_string(h.added_nonmanifold_edges) + ", inconsistent +" +
            std::to_string(h.added_inconsistent_edges) + ", self-intersections +" +
            std::to_string(h.new_self_intersections);
@@ -194,12 +188,18 @@ std::string harm_problem(const Mesh& input, const RestoreResult& r) {
 
 }  // namespace
 
-std::string restore_fuzz_case(std::span<const std::uint8_t> bytes) {
+RestoreFuzzInput read_restore_fuzz_input(std::span<const std::uint8_t> bytes) {
     ByteReader in(bytes);
     const Seed& seed = seeds()[in.integer(0, seeds().size() - 1)];
-    Mesh mesh = seed.mesh;
-    Request request;
-    read_case(in, seed, mesh, request);
+    RestoreFuzzInput request;
+    request.mesh = seed.mesh;
+    read_case(in, seed, request.mesh, request);
+    return request;
+}
+
+std::string restore_fuzz_case(std::span<const std::uint8_t> bytes) {
+    RestoreFuzzInput request = read_restore_fuzz_input(bytes);
+    const Mesh& mesh = request.mesh;
 
     std::size_t asked = 0;
     if (request.stop_at > 0) {

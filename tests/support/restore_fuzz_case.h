@@ -8,11 +8,27 @@
 /// place, vertices merged; they may also set a stop callback that fires at a given question or a
 /// deadline, and the harm rounds allowed. restore() then runs on one thread.
 
+#include <chrono>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 
+#include "resharp/mesh/mesh.h"
+#include "resharp/pipeline/options.h"
+
 namespace resharp::test {
+
+/// What a case restores, and how.
+struct RestoreFuzzInput {
+    Mesh mesh;                ///< the damaged part
+    RestoreOptions options;   ///< one thread, the harm rounds the bytes give
+    std::size_t stop_at = 0;  ///< the question the stop callback says yes to; 0: no callback
+    std::optional<std::chrono::milliseconds> deadline;  ///< from the start of restore()
+};
+
+/// Takes any bytes; gives the case they describe.
+RestoreFuzzInput read_restore_fuzz_input(std::span<const std::uint8_t> bytes);
 
 /// Takes any bytes; gives "" when restore() kept every promise, else what it broke: a bound it
 /// states (harm rounds, questions to the stop callback, a deadline missed by more than 3 s), a
