@@ -9,7 +9,7 @@
 # scratch (resharp, io and sim with clang; the restore() fuzzer adds sim and one CGAL file),
 # measured at 13 minutes with the cores shared by three other builds (load 8; not yet measured
 # on an idle machine). The restore() fuzzer ran 0.4 cases a second under that load (each
-# restores a damaged part of 3k to 8k triangles under ASan and checks it, CGAL included).
+# restores a damaged part of 2.6k to 6k triangles under ASan and checks it, CGAL included).
 #
 # Usage: scripts/fuzz.sh [SECONDS] [RESTORE_SECONDS]
 set -euo pipefail

@@ -41,7 +41,7 @@ struct Seed {
     double pitch = 0.5;
 };
 
-/// The parts, each under 10k triangles, by several meshers; made once.
+/// The parts by four meshers, 2,584 to 5,920 triangles; made once.
 const std::vector<Seed>& seeds() {
     static const std::vector<Seed> parts = [] {
         const std::vector<std::tuple<SmallPart, double, sim::Mesher>> made{

@@ -2,8 +2,8 @@
 /// One case of the restore() fuzzer (tests/fuzz/restore_fuzzer.cpp), apart from libFuzzer so that
 /// the test suite replays the committed cases (tests/fuzz/corpus/restore) with any compiler.
 ///
-/// The bytes pick one of six small parts the simulator makes (tests/support/small_parts.h, 3k to
-/// 8k triangles, by four meshers) and damage it the ways other meshers and exports damage meshes:
+/// The bytes pick one of six small parts the simulator makes (tests/support/small_parts.h, 2.6k to
+/// 6k triangles, by four meshers) and damage it the ways other meshers and exports damage meshes:
 /// jitter, runs of faces dropped, faces duplicated (as they are or turned over) or turned over in
 /// place, vertices merged; they may also set a stop callback that fires at a given question or a
 /// deadline, and the harm rounds allowed. restore() then runs on one thread.

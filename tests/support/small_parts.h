@@ -28,7 +28,7 @@ std::string_view to_string(SmallPart part);
 
 /// The part sampled at `pitch` (mm; grid phase 0.37, so that its faces at round coordinates are
 /// off the grid planes) and meshed by `mesher`: closed, manifold, outward oriented. At the default
-/// pitch 0.5 each has 3k to 5k triangles; the count grows as 1 / pitch^2.
+/// pitch 0.5 they have 5,920, 4,644 and 5,112 triangles; the count grows as 1 / pitch^2.
 Mesh small_part(SmallPart part, double pitch = 0.5,
                 sim::Mesher mesher = sim::Mesher::MarchingCubes);
 
