@@ -5,6 +5,7 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <span>
@@ -147,10 +148,11 @@ std::optional<Eigen::Matrix3d> solve_fit(const FitSamples& s) {
 /// Least-squares fit n(x) = n0 + a u + b w of the face normals over the faces' centroids, with
 /// (u, w) the centroid's offset from v in the tangent plane of `guess`, refitted once without
 /// the faces whose residual exceeds `max_residual` (radians, as a chord of unit normals);
-/// returns n0, the fitted normal at v, or nullopt when the centroids do not span the plane.
-std::optional<Vec3> fit_normal_at(const Mesh& mesh, const std::vector<Vec3>& normals,
-                                  std::span<const Index> faces, Index v, const Vec3& guess,
-                                  double max_residual, FitSamples& samples) {
+/// returns the field with n0, the fitted normal at v, made unit, or nullopt when the centroids
+/// do not span the plane.
+std::optional<NormalField> fit_normal_at(const Mesh& mesh, const std::vector<Vec3>& normals,
+                                         std::span<const Index> faces, Index v, const Vec3& guess,
+                                         double max_residual, FitSamples& samples) {
     fill_samples(mesh, normals, faces, v, guess, samples);
     const double max_residual2 = max_residual * max_residual;
     std::optional<Eigen::Matrix3d> fit = solve_fit(samples);
@@ -164,8 +166,13 @@ std::optional<Vec3> fit_normal_at(const Mesh& mesh, const std::vector<Vec3>& nor
     if (trimmed) fit = solve_fit(samples);
     if (!fit) return std::nullopt;
     const Vec3 n0 = fit->row(0).transpose();
-    if (!n0.allFinite() || n0.isZero(0.0)) return std::nullopt;
-    return Vec3(n0.normalized());
+    if (!n0.allFinite() || n0.isZero(0.0) || !fit->allFinite()) return std::nullopt;
+    const Vec3 t1 = guess.unitOrthogonal();  // the tangent frame of fill_samples
+    const Vec3 t2 = guess.cross(t1);
+    const double length = n0.norm();
+    return NormalField{n0 / length, (fit->row(1).transpose() * t1.transpose() +
+                                     fit->row(2).transpose() * t2.transpose()) /
+                                        length};
 }
 
 struct FitLimits {
@@ -188,19 +195,28 @@ bool coplanar(const std::vector<Vec3>& normals, std::span<const Index> faces) {
 }
 
 /// Replaces eq. 5.1's normal n at v by the linear fit where the fit is well posed, not planar
-/// and corrects n by less than the limit; `correction` gets the angle (degrees) it moved n by.
+/// and corrects n by less than the limit; `correction` gets the angle (degrees) it moved n by
+/// and `field` the fit's field.
 void refine_by_fit(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>& normals,
                    const std::vector<Index>& face_patch, const std::vector<Index>& vertex_patch,
-                   Index v, const FitLimits& limits, Vec3& n, float& correction,
+                   Index v, const FitLimits& limits, Vec3& n, float& correction, NormalField& field,
                    FitScratch& scratch) {
     fit_faces(mesh, c, face_patch, vertex_patch, v, scratch.faces, scratch.taken);
     if (scratch.faces.empty() || coplanar(normals, scratch.faces)) return;
     const auto fitted =
         fit_normal_at(mesh, normals, scratch.faces, v, n, limits.max_residual, scratch.samples);
-    if (fitted && fitted->dot(n) > limits.min_cosine) {
-        correction = static_cast<float>(angle_deg(*fitted, n));
-        n = *fitted;
+    if (fitted && fitted->n0.dot(n) > limits.min_cosine) {
+        correction = static_cast<float>(angle_deg(fitted->n0, n));
+        n = fitted->n0;
+        field = *fitted;
+        return;
     }
+    // Eq. 5.1's normal stays, but how the feature turns still tells one smooth surface from
+    // two (drop_smooth_crossings): on coarse facets of a small radius the faces stray from any
+    // linear field by more than the trimming allows, so that field comes from all of them.
+    const auto untrimmed = fit_normal_at(mesh, normals, scratch.faces, v, n,
+                                         std::numeric_limits<double>::infinity(), scratch.samples);
+    if (untrimmed) field = *untrimmed;
 }
 
 }  // namespace
@@ -221,7 +237,8 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
         for (Index v : mesh.triangles[f]) needed[v] = 1;
     }
     FeatureNormals result{std::vector<Vec3>(mesh.vertex_count(), Vec3::Zero()),
-                          std::vector<float>(mesh.vertex_count(), 0.0f)};
+                          std::vector<float>(mesh.vertex_count(), 0.0f),
+                          std::vector<NormalField>(mesh.vertex_count(), NormalField{})};
     tbb::parallel_for(
         tbb::blocked_range<Index>(0, static_cast<Index>(mesh.vertex_count()), 4096),
         [&](const auto& range) {
@@ -236,7 +253,7 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
                 }
                 if (options.estimate == NormalEstimate::LinearFit && !n.isZero(0.0)) {
                     refine_by_fit(mesh, connectivity, face_normals, face_patch, vertex_patch, v,
-                                  fit, n, result.fit_correction_deg[v], scratch);
+                                  fit, n, result.fit_correction_deg[v], result.field[v], scratch);
                 }
                 result.normal[v] = n;
             }

@@ -33,12 +33,23 @@ struct FeatureNormalOptions {
     double max_fit_residual_deg = 1.4;
 };
 
+/// A normal field about a vertex x_v: n(x) = n0 + gradient (x - x_v), n0 unit.
+struct NormalField {
+    Vec3 n0 = Vec3::Zero();                              ///< zero: no field
+    Eigen::Matrix3d gradient = Eigen::Matrix3d::Zero();  ///< d n / d x, 1/mm
+};
+
 struct FeatureNormals {
     std::vector<Vec3> normal;  ///< per vertex (#V), as described at feature_normals()
     /// Per vertex (#V): how far (degrees) the linear fit moved eq. 5.1's normal: zero on planes,
     /// a few degrees on curved features. The split keeps that much margin when it checks that
     /// pieces face the way of their surface.
     std::vector<float> fit_correction_deg;
+    /// Per vertex (#V, or empty): the feature's normal field about the vertex as the linear fit
+    /// found it (NormalEstimate::LinearFit; zero where there was none, as on planes), also where
+    /// the fit was not trusted to replace eq. 5.1's normal. drop_smooth_crossings() carries it
+    /// across a band.
+    std::vector<NormalField> field;
 };
 
 /// Per vertex (#V): at each vertex of an edge or corner triangle, N = sum(theta_i N_i) /
