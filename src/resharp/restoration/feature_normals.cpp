@@ -23,6 +23,9 @@ void validate(const FeatureNormalOptions& o) {
     if (!(o.max_fit_residual_deg >= 0.0 && o.max_fit_residual_deg <= 180.0)) {
         throw InvalidInput("largest fit residual must lie in [0, 180] degrees");
     }
+    if (!(o.near_face_angle_deg >= 0.0 && o.near_face_angle_deg <= 180.0)) {
+        throw InvalidInput("near-face angle must lie in [0, 180] degrees");
+    }
 }
 
 bool lies_on_patch(const Triangle& t, const std::vector<Index>& vertex_patch, Index patch) {
@@ -67,35 +70,51 @@ Vec3 neighbours_patch_normal(const Mesh& mesh, const Connectivity& c,
     return length > 0.0 ? Vec3(sum / length) : Vec3::Zero();
 }
 
-/// The faces wholly on v's patch around v and around its same-patch neighbours, each once, in
-/// the order first met. A face met again contains v or a neighbour already taken, which is
-/// cheaper to test than searching the list.
-void fit_faces(const Mesh& mesh, const Connectivity& c, const std::vector<Index>& face_patch,
-               const std::vector<Index>& vertex_patch, Index v, std::vector<Index>& out,
-               std::vector<Index>& taken) {
+/// The faces around v and around those of its neighbours that `follow` admits, each once, in
+/// the order first met, that `accept` admits. A face met again contains v or a neighbour
+/// already taken, which is cheaper to test than searching the list.
+template <class Follow, class Accept>
+void gather_faces(const Mesh& mesh, const Connectivity& c, Index v, Follow&& follow,
+                  Accept&& accept, std::vector<Index>& out, std::vector<Index>& taken) {
     out.clear();
     taken.assign(1, v);
-    const Index patch = vertex_patch[v];
     auto met_before = [&](const Triangle& t) {
         return std::any_of(taken.begin(), taken.end(),
                            [&](Index q) { return t[0] == q || t[1] == q || t[2] == q; });
     };
     auto take_ring = [&](Index q) {
         for (Index f : c.faces_around(q)) {
-            const Triangle& t = mesh.triangles[f];
-            if (face_patch[f] == patch && lies_on_patch(t, vertex_patch, patch) &&
-                (q == v || !met_before(t))) {
-                out.push_back(f);
-            }
+            if (accept(f) && (q == v || !met_before(mesh.triangles[f]))) out.push_back(f);
         }
         if (q != v) taken.push_back(q);
     };
     take_ring(v);
     for_each_ring_vertex(mesh, c, v, [&](Index q) {
-        if (vertex_patch[q] == patch && std::find(taken.begin(), taken.end(), q) == taken.end()) {
-            take_ring(q);
-        }
+        if (follow(q) && std::find(taken.begin(), taken.end(), q) == taken.end()) take_ring(q);
     });
+}
+
+/// The faces wholly on v's patch around v and around its same-patch neighbours.
+void fit_faces(const Mesh& mesh, const Connectivity& c, const std::vector<Index>& face_patch,
+               const std::vector<Index>& vertex_patch, Index v, std::vector<Index>& out,
+               std::vector<Index>& taken) {
+    const Index patch = vertex_patch[v];
+    gather_faces(
+        mesh, c, v, [&](Index q) { return vertex_patch[q] == patch; },
+        [&](Index f) {
+            return face_patch[f] == patch && lies_on_patch(mesh.triangles[f], vertex_patch, patch);
+        },
+        out, taken);
+}
+
+/// The faces of any patch around v and its neighbours whose normals lie within the angle of
+/// `min_cosine` of n.
+void near_faces(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>& normals, Index v,
+                const Vec3& n, double min_cosine, std::vector<Index>& out,
+                std::vector<Index>& taken) {
+    gather_faces(
+        mesh, c, v, [](Index) { return true; },
+        [&](Index f) { return normals[f].dot(n) > min_cosine; }, out, taken);
 }
 
 /// The linear model of fit_normal_at: per face the row (1, u, w) of its centroid's offset from
@@ -178,6 +197,7 @@ std::optional<NormalField> fit_normal_at(const Mesh& mesh, const std::vector<Vec
 struct FitLimits {
     double min_cosine;    ///< of the largest correction of eq. 5.1's normal
     double max_residual;  ///< chord between a face normal and the first fit
+    double near_cosine;   ///< of the widest angle to eq. 5.1's normal of near_faces()
 };
 
 /// Buffers one worker reuses for every vertex.
@@ -214,8 +234,14 @@ void refine_by_fit(const Mesh& mesh, const Connectivity& c, const std::vector<Ve
     // Eq. 5.1's normal stays, but how the feature turns still tells one smooth surface from
     // two (drop_smooth_crossings): on coarse facets of a small radius the faces stray from any
     // linear field by more than the trimming allows, so that field comes from all of them.
-    const auto untrimmed = fit_normal_at(mesh, normals, scratch.faces, v, n,
-                                         std::numeric_limits<double>::infinity(), scratch.samples);
+    const double all = std::numeric_limits<double>::infinity();
+    auto untrimmed = fit_normal_at(mesh, normals, scratch.faces, v, n, all, scratch.samples);
+    if (!untrimmed) {
+        // A patch one strip of facets wide (a cylinder a few cells in radius, along a grid
+        // axis) cannot tell the slope across it: the faces near v that lie near its normal can.
+        near_faces(mesh, c, normals, v, n, limits.near_cosine, scratch.faces, scratch.taken);
+        untrimmed = fit_normal_at(mesh, normals, scratch.faces, v, n, all, scratch.samples);
+    }
     if (untrimmed) field = *untrimmed;
 }
 
@@ -230,7 +256,8 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
     validate(options);
     const double degree = std::numbers::pi / 180.0;
     const FitLimits fit{std::cos(options.max_fit_correction_deg * degree),
-                        2.0 * std::sin(options.max_fit_residual_deg * degree / 2.0)};
+                        2.0 * std::sin(options.max_fit_residual_deg * degree / 2.0),
+                        std::cos(options.near_face_angle_deg * degree)};
     std::vector<std::uint8_t> needed(mesh.vertex_count(), 0);
     for (Index f = 0; f < mesh.face_count(); ++f) {
         if (bands.face_role[f] == BandRole::None) continue;

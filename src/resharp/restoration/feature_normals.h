@@ -31,6 +31,11 @@ struct FeatureNormalOptions {
     /// a scallop cusp that region growing let into the patch are not, and would tilt the fit.
     /// 180 keeps every face.
     double max_fit_residual_deg = 1.4;
+    /// Where the feature's own faces cannot be fitted (a patch one strip of facets wide), the
+    /// normal field of NormalField is fitted to the faces near the vertex, of any patch, whose
+    /// normals lie within this angle (degrees) of the vertex's eq. 5.1 normal. It only serves
+    /// to tell one smooth surface from two (drop_smooth_crossings), not to place points.
+    double near_face_angle_deg = 25.0;
 };
 
 /// A normal field about a vertex x_v: n(x) = n0 + gradient (x - x_v), n0 unit.
