@@ -29,17 +29,11 @@ constexpr double kPhase = 0.37;  // keeps round coordinates off the grid planes
 constexpr double kLength = 16.0;
 
 CsgNode primitive(sim::Shape s, const sim::Placement& p = {}) {
-    CsgNode n;
-    n.shape = s;
-    n.placement = p;
-    return n;
+    return {.shape = s, .placement = p};
 }
 
 CsgNode combine(CsgOp op, std::vector<CsgNode> operands) {
-    CsgNode n;
-    n.op = op;
-    n.operands = std::move(operands);
-    return n;
+    return {.op = op, .operands = std::move(operands)};
 }
 
 sim::Placement turned(const Vec3& axis, double degrees, const Vec3& shift = Vec3::Zero()) {
