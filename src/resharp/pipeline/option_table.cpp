@@ -27,7 +27,7 @@ constexpr std::array<std::pair<std::string_view, NormalEstimate>, 2> kEstimates{
     {"angle-weighted", NormalEstimate::AngleWeighted},
 }};
 
-const std::array<OptionInfo, 23> kTable{{
+const std::array<OptionInfo, 24> kTable{{
     {"curvature-feature",
      "what k-means clusters: 'signed' (k1, k2) as the paper, or 'magnitude' (|k|min, |k|max), "
      "which keeps concave and convex edges together",
@@ -86,6 +86,11 @@ const std::array<OptionInfo, 23> kTable{{
      "a patch border whose patches' normals differ less (degrees) is never a sharp edge, even "
      "with edge vertices; 0 is the paper's rule",
      ValueField<double>{&nested<&R::bands, &ClassificationOptions::smooth_border_angle_deg>}, true},
+    {"smooth-continuation-angle",
+     "a crossing edge whose two sides' fitted normal fields, carried to its middle, differ less "
+     "(degrees) continues one smooth surface and is not restored; 0 is the paper's rule",
+     ValueField<double>{&nested<&R::bands, &ClassificationOptions::smooth_continuation_angle_deg>},
+     true},
     {"spike-angle",
      "corner points are refused when normals around the corner differ more (degrees, paper "
      "5.3)",

@@ -184,6 +184,8 @@ Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const Restor
         d.feature_normals =
             feature_normals(mesh, d.connectivity, d.normals.face, d.features.face_patch,
                             d.features.vertex_patch, d.bands, options.normals);
+        d.bands =
+            drop_smooth_crossings(mesh, d.connectivity, d.bands, d.feature_normals, options.bands);
     });
     return d;
 }
