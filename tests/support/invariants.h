@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "resharp/mesh/mesh.h"
+#include "resharp/pipeline/restore.h"
 
 namespace resharp::test {
 
@@ -26,6 +27,17 @@ void expect_no_flipped_triangles(const Mesh& input, const Mesh& output,
 
 /// The output has no self-intersection the input did not have (CGAL, exact predicates).
 void expect_no_new_self_intersections(const Mesh& input, const Mesh& output);
+
+/// Output faces of `r` that replace a face of `input` and turn more than 90 degrees against
+/// every input face nearest one of their vertices or their centroid, searched by brute force over
+/// the whole input (O(changed faces x #F) at worst): a check written apart from the harm check's
+/// own.
+std::size_t turned_against_nearest(const Mesh& input, const RestoreResult& r);
+
+/// What must hold of any restoration of `input` into `r` with `options`: input vertices kept, no
+/// boundary, non-manifold or inconsistent edge added, nothing turned against the input, no new
+/// self-intersection, the harm loop within its bound.
+void expect_no_harm(const Mesh& input, const RestoreResult& r, const RestoreOptions& options);
 
 /// Distance from p to the segment a-b.
 double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b);
