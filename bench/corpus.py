@@ -233,7 +233,8 @@ def section(raw):
         "are intersecting face pairs by CGAL's exact predicates. *Points undone*: points the harm "
         "check withdrew, over its rounds. *Restoration rate*: share of the ideal points on the "
         "exact junction restored within 0.05 h (docs/results.md). Restore times are single "
-        "runs, not benchmarks.",
+        "runs, not benchmarks. OpenVDB's own `volumeToMesh` is tested apart, on solids the "
+        "simulator sampled at h/8 (`tests/pipeline/openvdb_test.cpp`).",
         "",
         table(results),
         "",
