@@ -198,7 +198,7 @@ def table(results):
         lines.append(
             f"{head} {r['triangles_in']:,} | yes ({r['restore_seconds']:.2f}) | "
             f"{flipped_cell(r)} | "
-            f"{r['boundary_added']} / {r['nonmanifold_added']} / {r['inconsistent_added']} | "
+            f"{r['boundary_added']:,} / {r['nonmanifold_added']:,} / {r['inconsistent_added']:,} | "
             f"{r['self_intersections_added']} ({r['self_intersections_input']}) | "
             f"{r['edge_points']:,} / {r['corner_points']} | "
             f"{r['undone_points']} ({r['harm_rounds']}) | {r['duplicates_removed']:,} | "
@@ -241,10 +241,10 @@ def section(raw):
         "Runs that did not finish, added an edge defect or a self-intersection, or (on-surface "
         "meshers) flipped a face: " + ("; ".join(harmed) if harmed else "none") + ". Flipped "
         "faces on the off-surface meshers (midpoint, surface-nets): "
-        + ("; ".join(off_flipped) if off_flipped else "none") + ". There the count overstates: "
+        + ("; ".join(off_flipped) if off_flipped else "none") + ". There the criterion is ambiguous: "
         "the oracle gives an off-surface vertex the normal of the exact surface point nearest "
         "it, which beside an edge can be the other face's, so a restored face lying on one face "
-        "of a 90 degree edge meets it at a dot product of 0 or a little below and counts "
+        "of a 90 degree edge meets that normal at a dot product of 0 (not turned) or a little below, and counts "
         "(column *flipped*: of the faces with an input vertex, those within 1e-6 of 0 and those "
         "below).",
         END,
