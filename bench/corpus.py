@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Measures restore()'s promise on every mesher's output and writes its table into docs/robustness.md.
+"""Measures restore()'s promise on every mesher's output; writes the table in docs/robustness.md.
 
     python3 bench/corpus.py [--build build] [--scratch DIR] [--parts NAME ...] [--meshers NAME ...]
                             [--raw FILE] [--from-raw FILE] [--check]
@@ -241,12 +241,12 @@ def section(raw):
         "Runs that did not finish, added an edge defect or a self-intersection, or (on-surface "
         "meshers) flipped a face: " + ("; ".join(harmed) if harmed else "none") + ". Flipped "
         "faces on the off-surface meshers (midpoint, surface-nets): "
-        + ("; ".join(off_flipped) if off_flipped else "none") + ". There the criterion is ambiguous: "
-        "the oracle gives an off-surface vertex the normal of the exact surface point nearest "
-        "it, which beside an edge can be the other face's, so a restored face lying on one face "
-        "of a 90 degree edge meets that normal at a dot product of 0 (not turned) or a little below, and counts "
-        "(column *flipped*: of the faces with an input vertex, those within 1e-6 of 0 and those "
-        "below).",
+        + ("; ".join(off_flipped) if off_flipped else "none") + ". There the criterion is "
+        "ambiguous: the oracle gives an off-surface vertex the normal of the exact surface point "
+        "nearest it, which beside an edge can be the other face's, so a restored face lying on "
+        "one face of a 90 degree edge meets that normal at a dot product of 0 (not turned) or a "
+        "little below, and counts (column *flipped*: of the faces with an input vertex, those "
+        "within 1e-6 of 0 and those below).",
         END,
     ])
 
