@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <utility>
+#include <vector>
 
 #include "arrays.h"
 #include "errors.h"
@@ -35,21 +36,49 @@ py::object segmentation_to(Segmentation&& s) {
     return labels;
 }
 
+/// A cancellation callback that turns Ctrl-C into a stop: restore() asks it before each stage,
+/// on the calling thread, which takes the GIL back just long enough to run Python's signal
+/// handlers. A raised KeyboardInterrupt stays pending and is rethrown once restore() is back.
+class InterruptWatch {
+public:
+    bool interrupted() {
+        const py::gil_scoped_acquire locked;
+        interrupted_ = interrupted_ || PyErr_CheckSignals() != 0;
+        return interrupted_;
+    }
+    void rethrow_if_interrupted() const {
+        if (interrupted_) throw py::error_already_set();
+    }
+
+private:
+    bool interrupted_ = false;
+};
+
 py::dict restore_arrays(py::handle vertices, py::handle faces, const py::kwargs& keywords) {
     RestoreCall call = parse_keywords(keywords);
     call.options.keep_segmentation = call.segmentation;
+    InterruptWatch interrupt;
+    call.options.stop.cancelled = [&interrupt] { return interrupt.interrupted(); };
     Mesh mesh = mesh_from(vertices, faces);
+    std::vector<Index> welded_vertex;
     RestoreResult result;
     {
         const py::gil_scoped_release unlocked;
-        if (call.weld)
-            mesh = weld(TriangleSoup{std::move(mesh.positions), std::move(mesh.triangles)});
+        if (call.weld) {
+            WeldedMesh welded =
+                weld_mapped(TriangleSoup{std::move(mesh.positions), std::move(mesh.triangles)});
+            mesh = std::move(welded.mesh);
+            welded_vertex = std::move(welded.vertex_of_point);
+        }
         result = restore(mesh, call.options);
     }
+    interrupt.rethrow_if_interrupted();
     py::dict out;
     out["vertices"] = positions_to(std::move(result.mesh.positions));
     out["faces"] = triangles_to(std::move(result.mesh.triangles));
     out["source_face"] = indices_to(std::move(result.source_face));
+    out["welded_vertex"] =
+        call.weld ? py::object(indices_to(std::move(welded_vertex))) : py::none();
     out["report"] = report_to_json(result.report).dump();
     out["segmentation"] =
         call.segmentation ? segmentation_to(std::move(result.segmentation)) : py::none();

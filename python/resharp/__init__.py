@@ -52,6 +52,9 @@ class RestoreResult:
     faces: _np.ndarray
     #: (#F',) int32: for each output face, the input face (row of `faces` given) it was cut from.
     source_face: _np.ndarray
+    #: With weld=True, (#V,) int32: for each row of the vertices given, the row of `vertices`
+    #: it was welded into (-1 for a vertex no face uses); None otherwise.
+    welded_vertex: _Optional[_np.ndarray]
     #: Every count and stage time, under the keys of `resharp restore --report`'s JSON.
     report: dict
     #: With segmentation=True, what was detected; None otherwise.
@@ -70,6 +73,7 @@ def restore(vertices, faces, **options):
         vertices=r["vertices"],
         faces=r["faces"],
         source_face=r["source_face"],
+        welded_vertex=r["welded_vertex"],
         report=_json.loads(r["report"]),
         segmentation=Segmentation(**labels) if labels is not None else None,
     )
@@ -97,7 +101,8 @@ simulation (paper sections 3-5), without moving an input vertex.
     faces: (#F, 3) int32, int64, uint32 or uint64 numpy array of indices into vertices,
         counter-clockwise seen from outside.
 
-Returns a RestoreResult (vertices, faces, source_face, report, segmentation).
+Returns a RestoreResult (vertices, faces, source_face, welded_vertex, report, segmentation).
+Ctrl-C stops it between two stages and raises KeyboardInterrupt.
 Raises InvalidInput (a ValueError) naming the array and element for a wrong shape or dtype,
 a NaN or infinite coordinate or an index out of range, and naming the option for a value
 out of range; TypeError for an unknown keyword or a value of the wrong type.

@@ -140,3 +140,15 @@ def test_paper_applies_the_papers_choices(example, restored):
                                        curved_region_faces=0, merge_over_sharp_borders=True,
                                        unconfirmed_border_angle=180.0, smooth_border_angle=0.0))
     assert not same(paper, restored)
+
+
+def test_weld_map_points_each_given_vertex_at_its_welded_row(example):
+    V, F = example
+    used = V[F.reshape(-1)]  # a soup: three points per triangle, then one no face uses
+    points = np.concatenate([used, [[1e3, 1e3, 1e3]]])
+    soup = np.arange(len(used), dtype=np.int32).reshape(-1, 3)
+    r = resharp.restore(points, soup, weld=True)
+    assert r.welded_vertex.shape == (len(points),) and r.welded_vertex.dtype == np.int32
+    assert np.array_equal(r.vertices[r.welded_vertex[:-1]], used)
+    assert r.welded_vertex[-1] == -1
+    assert resharp.restore(V, F).welded_vertex is None

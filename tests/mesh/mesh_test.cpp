@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <vector>
 
 #include "resharp/core/errors.h"
 #include "resharp/mesh/geometry.h"
@@ -47,6 +48,15 @@ TEST(Weld, DropsUnusedPoints) {
     const Mesh mesh = weld(soup);
     EXPECT_EQ(mesh.vertex_count(), 3u);
     EXPECT_EQ(mesh.triangles[0], (Triangle{0, 1, 2}));
+}
+
+TEST(Weld, MapsEachSoupPointToItsVertex) {
+    TriangleSoup soup;
+    soup.points = {{5, 5, 5}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}};
+    soup.triangles = {{1, 2, 3}, {4, 5, 3}};
+    const WeldedMesh welded = weld_mapped(soup);
+    EXPECT_EQ(welded.vertex_of_point, (std::vector<Index>{kNoIndex, 0, 1, 2, 1, 3}));
+    EXPECT_EQ(welded.mesh.triangles, weld(soup).triangles);
 }
 
 TEST(Weld, KeepsEveryPointOfManyLooseTrianglesAndFindsTheirCopies) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <utility>
 
 #include "resharp/core/errors.h"
 
@@ -79,7 +80,7 @@ private:
 
 }  // namespace
 
-Mesh weld(const TriangleSoup& soup) {
+WeldedMesh weld_mapped(const TriangleSoup& soup) {
     Mesh mesh;
     mesh.triangles.reserve(soup.triangles.size());
     std::vector<Index> new_index(soup.points.size(), kNoIndex);
@@ -107,8 +108,10 @@ Mesh weld(const TriangleSoup& soup) {
         }
         mesh.triangles.push_back(welded);
     }
-    return mesh;
+    return {std::move(mesh), std::move(new_index)};
 }
+
+Mesh weld(const TriangleSoup& soup) { return weld_mapped(soup).mesh; }
 
 TriangleSoup to_soup(const Mesh& mesh) { return {mesh.positions, mesh.triangles}; }
 

@@ -25,9 +25,19 @@ struct Mesh {
     std::size_t face_count() const { return triangles.size(); }
 };
 
+/// A welded mesh and where each point of its soup went.
+struct WeldedMesh {
+    Mesh mesh;
+    /// #P: the vertex of `mesh` each soup point became, kNoIndex for a point no triangle uses.
+    std::vector<Index> vertex_of_point;
+};
+
 /// Merges points whose coordinates are exactly equal (bitwise, after folding -0 into +0) and
 /// drops points no triangle uses. Vertices keep the order in which the triangles first use them.
 /// \throws InvalidInput if an index is out of range or a coordinate is NaN or infinite.
+WeldedMesh weld_mapped(const TriangleSoup& soup);
+
+/// weld_mapped()'s mesh alone.
 Mesh weld(const TriangleSoup& soup);
 
 /// The mesh as a soup (positions and triangles unchanged), for writers that take soups.
