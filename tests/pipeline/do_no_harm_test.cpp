@@ -18,20 +18,6 @@
 namespace resharp {
 namespace {
 
-/// What must hold of any restoration: input vertices kept, no defect added, nothing turned
-/// against the input, no new self-intersection, the loop within its bound.
-void expect_no_harm(const Mesh& input, const RestoreResult& r, const RestoreOptions& options) {
-    test::expect_input_vertices_preserved(input, r.mesh);
-    const MeshDiagnostics before = diagnose(input, build_connectivity(input));
-    const MeshDiagnostics after = diagnose(r.mesh, build_connectivity(r.mesh));
-    EXPECT_LE(after.boundary_edges, before.boundary_edges);
-    EXPECT_LE(after.nonmanifold_edges, before.nonmanifold_edges);
-    EXPECT_LE(after.inconsistent_edges, before.inconsistent_edges);
-    EXPECT_EQ(test::turned_against_nearest(input, r.mesh, r.source_face), 0u);
-    test::expect_no_new_self_intersections(input, r.mesh);
-    EXPECT_LE(r.report.harm_rounds, static_cast<std::size_t>(options.max_harm_rounds));
-}
-
 /// The drilled plate damaged the ways other meshers and careless exports damage meshes.
 Mesh perturbed(const Mesh& mesh, double pitch, int kind, std::mt19937& random) {
     Mesh out = mesh;
@@ -68,7 +54,7 @@ TEST(DoNoHarm, PerturbedPlatesFinishAndComeOutNoWorse) {
         const Mesh input = perturbed(shape.mesh, shape.pitch, kind, random);
         const RestoreResult r = restore(input, options);
         EXPECT_GT(r.report.edge_points_inserted, 0u);  // still restores the rest
-        expect_no_harm(input, r, options);
+        test::expect_no_harm(input, r, options);
     }
 }
 
@@ -79,7 +65,7 @@ TEST(DoNoHarm, EveryMeshersPlateComesOutNoWorse) {
         SCOPED_TRACE(sim::to_string(mesher));
         const test::SampledShape shape = test::sampled_drilled_plate(0.5, mesher);
         const RestoreResult r = restore(shape.mesh, options);
-        expect_no_harm(shape.mesh, r, options);
+        test::expect_no_harm(shape.mesh, r, options);
     }
 }
 
