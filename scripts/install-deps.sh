@@ -8,6 +8,7 @@ packages=(
     build-essential cmake ninja-build
     libeigen3-dev libtbb-dev libcli11-dev nlohmann-json3-dev
     libcgal-dev libgmp-dev libmpfr-dev
+    libopenvdb-dev libboost-iostreams-dev  # OpenVDB as another mesher, in a test
     libgtest-dev libgmock-dev libbenchmark-dev
     clang clang-format libclang-rt-dev
     python3

@@ -12,67 +12,11 @@
 #include "resharp/mesh/geometry.h"
 #include "resharp/pipeline/restore.h"
 #include "support/grid_shapes.h"
+#include "support/harm_criteria.h"
 #include "support/invariants.h"
 
 namespace resharp {
 namespace {
-
-/// Output faces that replace an input face and turn more than 90 degrees against every input
-/// face nearest one of their vertices or their centroid, searched by brute force over the whole
-/// input: a check written apart from the harm check's own.
-std::size_t turned_against_nearest(const Mesh& input, const RestoreResult& r) {
-    const std::vector<Vec3> in = face_normals(input);
-    std::vector<Vec3> centre(input.face_count());
-    std::vector<double> radius(input.face_count());
-    for (std::size_t g = 0; g < input.face_count(); ++g) {
-        const Triangle& t = input.triangles[g];
-        centre[g] = (input.positions[t[0]] + input.positions[t[1]] + input.positions[t[2]]) / 3.0;
-        for (Index v : t) radius[g] = std::max(radius[g], (input.positions[v] - centre[g]).norm());
-    }
-    auto turned_at = [&](const Vec3& q, const Vec3& n) {
-        double nearest = std::numeric_limits<double>::infinity();
-        bool agrees = false;
-        for (std::size_t g = 0; g < input.face_count(); ++g) {
-            const double reach = std::max(0.0, (q - centre[g]).norm() - radius[g]);
-            if (reach * reach > 1.01 * nearest + 1e-12) continue;  // cannot be among the nearest
-            const Triangle& t = input.triangles[g];
-            const double d = squared_distance_to_triangle(
-                q, input.positions[t[0]], input.positions[t[1]], input.positions[t[2]]);
-            // Ties within rounding: a vertex lies on every face around it, at a distance that
-            // rounding may make 1e-17 instead of 0.
-            constexpr double kTie = 1e-18;  // mm^2
-            if (d < nearest - kTie) agrees = false;
-            if (d <= nearest + kTie) agrees = agrees || in[g].dot(n) >= -1e-6;
-            nearest = std::min(nearest, d);
-        }
-        return !agrees;
-    };
-    std::size_t turned = 0;
-    for (std::size_t o = 0; o < r.mesh.face_count(); ++o) {
-        const Triangle& t = r.mesh.triangles[o];
-        if (t == input.triangles[r.source_face[o]]) continue;
-        const auto& x = r.mesh.positions;
-        const Vec3 n = triangle_normal(x[t[0]], x[t[1]], x[t[2]]);
-        bool is_turned = n.isZero(0.0) || turned_at((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0, n);
-        for (Index v : t) is_turned = is_turned || turned_at(x[v], n);
-        turned += is_turned;
-    }
-    return turned;
-}
-
-/// What must hold of any restoration: input vertices kept, no defect added, nothing turned
-/// against the input, no new self-intersection, the loop within its bound.
-void expect_no_harm(const Mesh& input, const RestoreResult& r, const RestoreOptions& options) {
-    test::expect_input_vertices_preserved(input, r.mesh);
-    const MeshDiagnostics before = diagnose(input, build_connectivity(input));
-    const MeshDiagnostics after = diagnose(r.mesh, build_connectivity(r.mesh));
-    EXPECT_LE(after.boundary_edges, before.boundary_edges);
-    EXPECT_LE(after.nonmanifold_edges, before.nonmanifold_edges);
-    EXPECT_LE(after.inconsistent_edges, before.inconsistent_edges);
-    EXPECT_EQ(turned_against_nearest(input, r), 0u);
-    test::expect_no_new_self_intersections(input, r.mesh);
-    EXPECT_LE(r.report.harm_rounds, static_cast<std::size_t>(options.max_harm_rounds));
-}
 
 /// The drilled plate damaged the ways other meshers and careless exports damage meshes.
 Mesh perturbed(const Mesh& mesh, double pitch, int kind, std::mt19937& random) {
@@ -110,7 +54,7 @@ TEST(DoNoHarm, PerturbedPlatesFinishAndComeOutNoWorse) {
         const Mesh input = perturbed(shape.mesh, shape.pitch, kind, random);
         const RestoreResult r = restore(input, options);
         EXPECT_GT(r.report.edge_points_inserted, 0u);  // still restores the rest
-        expect_no_harm(input, r, options);
+        test::expect_no_harm(input, r, options);
     }
 }
 
@@ -121,7 +65,7 @@ TEST(DoNoHarm, EveryMeshersPlateComesOutNoWorse) {
         SCOPED_TRACE(sim::to_string(mesher));
         const test::SampledShape shape = test::sampled_drilled_plate(0.5, mesher);
         const RestoreResult r = restore(shape.mesh, options);
-        expect_no_harm(shape.mesh, r, options);
+        test::expect_no_harm(shape.mesh, r, options);
     }
 }
 

@@ -153,8 +153,8 @@ FoldedSheet folded_sheet() {
 }
 
 // On the drilled plate's hole wall (radius 3.08 mm, normals pointing into the hole, towards its
-// axis) the fitted second-order shape bends towards the normal by 1 / r across the axis and not
-// along it; on the flat faces it is zero.
+// axis) the second-order shape of the fitted normal field bends towards the normal by 1 / r across
+// the axis and not along it; on the flat faces it is zero.
 TEST(FeatureNormals, CurvatureOfTheHoleWallIsOneOverItsRadius) {
     const test::SampledShape shape = test::sampled_drilled_plate();
     const Classified c = classify(shape.mesh);
@@ -167,9 +167,14 @@ TEST(FeatureNormals, CurvatureOfTheHoleWallIsOneOverItsRadius) {
     for (Index v = 0; v < shape.mesh.vertex_count(); ++v) {
         if (fit.normal[v].isZero(0.0)) continue;
         const Eigen::Matrix3d frame = tangent_frame(fit.normal[v]);
-        const Eigen::Vector3d k = fit.curvature[v].cast<double>();
+        const bool fitted = fit.field[v].n0 == fit.normal[v];  // the fit placed the normal
+        const Eigen::Vector3d k =
+            fitted ? quadric_from_normal_slope(shape.mesh.positions[v], fit.normal[v],
+                                               fit.field[v].gradient)
+                         .curvature
+                   : Eigen::Vector3d::Zero();
         if (shape.surface_ids[v] != kWall) {
-            flat += k.isZero(0.0f);
+            flat += k.isZero(0.0);
             continue;
         }
         ++wall;

@@ -41,6 +41,17 @@ TEST(EdgePoint, FlipTestRefusesAPointOutsideTheBand) {
     EXPECT_FALSE(passes_flip_test(a, kTop, b, kSide));
 }
 
+TEST(EdgePoint, FlipTestRefusesAPointAtAnEndAtEveryScale) {
+    // The traces meet within rounding of a (1e-14 of the band's width away): eq. 5.4's sign is
+    // then rounding, so the point is refused at any scale; 1e-6 of the width is a real band.
+    for (double s : {1e-3, 1.0, 25.4, 1e3}) {
+        SCOPED_TRACE(s);
+        const Vec3 b = s * Vec3(0.0, -0.2, 0.0);
+        EXPECT_FALSE(passes_flip_test(s * Vec3(-2e-15, 0.0, 0.0), kTop, b, kSide));
+        EXPECT_TRUE(passes_flip_test(s * Vec3(-2e-7, 0.0, 0.0), kTop, b, kSide));
+    }
+}
+
 TEST(EdgePoint, ParallelNormalsGiveNoPoint) {
     const Vec3 a(0, 0, 0), b(1, 0, 0);
     EXPECT_FALSE(edge_point(a, kTop, b, kTop).has_value());

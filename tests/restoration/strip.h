@@ -25,7 +25,6 @@ struct Strip {
         normals = surface_normals(mesh, connectivity);
         feature_normals.normal.resize(mesh.vertex_count(), Vec3::Zero());
         feature_normals.fit_correction_deg.resize(mesh.vertex_count(), 0.0f);
-        feature_normals.curvature.resize(mesh.vertex_count(), Eigen::Vector3f::Zero());
     }
 };
 

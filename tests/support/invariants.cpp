@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 
 #include "resharp/eval/self_intersections.h"
 #include "resharp/mesh/connectivity.h"
 #include "resharp/mesh/diagnostics.h"
 #include "resharp/mesh/geometry.h"
+#include "support/harm_criteria.h"
 
 namespace resharp::test {
 
@@ -56,6 +58,19 @@ void expect_no_flipped_triangles(const Mesh& input, const Mesh& output,
 void expect_no_new_self_intersections(const Mesh& input, const Mesh& output) {
     const std::size_t before = eval::self_intersecting_pairs(input).size();
     EXPECT_LE(eval::self_intersecting_pairs(output).size(), before);
+}
+
+void expect_no_harm(const Mesh& input, const RestoreResult& r, const RestoreOptions& options) {
+    EXPECT_LE(r.report.harm_rounds, static_cast<std::size_t>(options.max_harm_rounds));
+    const HarmFound h = find_harm(input, r.mesh, r.source_face);
+    EXPECT_EQ(h.moved_input_vertices, 0u);
+    EXPECT_EQ(h.bad_source_faces, 0u);
+    EXPECT_EQ(h.lost_faces, 0u);
+    EXPECT_EQ(h.turned_faces, 0u);
+    EXPECT_EQ(h.added_boundary_edges, 0u);
+    EXPECT_EQ(h.added_nonmanifold_edges, 0u);
+    EXPECT_EQ(h.added_inconsistent_edges, 0u);
+    EXPECT_EQ(h.new_self_intersections, 0u);
 }
 
 double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "resharp/mesh/mesh.h"
+#include "resharp/pipeline/restore.h"
 
 namespace resharp::test {
 
@@ -26,6 +27,10 @@ void expect_no_flipped_triangles(const Mesh& input, const Mesh& output,
 
 /// The output has no self-intersection the input did not have (CGAL, exact predicates).
 void expect_no_new_self_intersections(const Mesh& input, const Mesh& output);
+
+/// What must hold of any restoration of `input` into `r` with `options`: the harm loop within its
+/// bound and nothing find_harm() (support/harm_criteria.h) finds, each criterion its own failure.
+void expect_no_harm(const Mesh& input, const RestoreResult& r, const RestoreOptions& options);
 
 /// Distance from p to the segment a-b.
 double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b);

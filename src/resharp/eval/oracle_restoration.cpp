@@ -33,10 +33,8 @@ BandClassification bands_of(const Mesh& mesh, const Connectivity& connectivity,
 /// feature_normals() leaves vertices off the bands; exact normals need no fit margin.
 FeatureNormals exact_feature_normals(const Mesh& mesh, const BandClassification& bands,
                                      const Oracle& oracle) {
-    FeatureNormals normals{
-        std::vector<Vec3>(mesh.vertex_count(), Vec3::Zero()),
-        std::vector<float>(mesh.vertex_count(), 0.0f),
-        std::vector<Eigen::Vector3f>(mesh.vertex_count(), Eigen::Vector3f::Zero())};
+    FeatureNormals normals{std::vector<Vec3>(mesh.vertex_count(), Vec3::Zero()),
+                           std::vector<float>(mesh.vertex_count(), 0.0f)};
     for (Index f = 0; f < mesh.face_count(); ++f) {
         if (bands.face_role[f] == BandRole::None) continue;
         for (Index v : mesh.triangles[f]) normals.normal[v] = oracle.normals[v];
@@ -79,9 +77,6 @@ ExactNormalRestoration restore_with_exact_normals(const Mesh& mesh, const Oracle
         if (d.feature_normals.normal[v].isZero(0.0)) continue;
         d.feature_normals.normal[v] = oracle.normals[v];
         d.feature_normals.fit_correction_deg[v] = 0.0f;  // exact normals need no margin
-        // The fitted curvature belongs to the fitted normal's frame: these points are placed on
-        // the exact tangent planes, the first-order ceiling.
-        d.feature_normals.curvature[v].setZero();
     }
     BandRestoration restored = restore_bands(d.surface(mesh), d.bands, d.feature_normals, options);
     return {std::move(restored.output.mesh),

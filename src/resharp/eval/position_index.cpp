@@ -22,7 +22,12 @@ PositionIndex::PositionIndex(std::span<const Vec3> points) {
 
 std::optional<Index> PositionIndex::find(const Vec3& p) const {
     if (const auto it = exact_.find(key_of<double>(p)); it != exact_.end()) return it->second;
-    if (const auto it = rounded_.find(key_of<float>(p)); it != rounded_.end()) return it->second;
+    // Only a point a float holds may have lost digits to one: a point that needs a double came
+    // from a file that keeps doubles, so its match, if any, is exact (a restored point a few
+    // micrometres from an input vertex is not that vertex).
+    const Key<float> rounded = key_of<float>(p);
+    if (Vec3(rounded.c[0], rounded.c[1], rounded.c[2]) != p) return std::nullopt;
+    if (const auto it = rounded_.find(rounded); it != rounded_.end()) return it->second;
     return std::nullopt;
 }
 

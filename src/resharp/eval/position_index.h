@@ -20,8 +20,8 @@ public:
     /// round alike, the first is kept for the rounding.
     explicit PositionIndex(std::span<const Vec3> points);
 
-    /// The index into the constructor's points of the one equal to `p`, else of the one that
-    /// rounds as `p` does, if any.
+    /// The index into the constructor's points of the one equal to `p`, else, if `p` is a float
+    /// (read from a file that keeps floats), of the one that rounds to it, if any.
     std::optional<Index> find(const Vec3& p) const;
 
 private:

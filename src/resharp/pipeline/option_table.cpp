@@ -28,11 +28,11 @@ constexpr std::array<std::pair<std::string_view, NormalEstimate>, 2> kEstimates{
 }};
 
 constexpr std::array<std::pair<std::string_view, PointPlacement>, 2> kPlacements{{
-    {"second-order", PointPlacement::SecondOrder},
     {"tangent-planes", PointPlacement::TangentPlanes},
+    {"second-order", PointPlacement::SecondOrder},
 }};
 
-const std::array<OptionInfo, 24> kTable{{
+const std::array<OptionInfo, 25> kTable{{
     {"curvature-feature",
      "what k-means clusters: 'signed' (k1, k2) as the paper, or 'magnitude' (|k|min, |k|max), "
      "which keeps concave and convex edges together",
@@ -91,11 +91,16 @@ const std::array<OptionInfo, 24> kTable{{
      "a patch border whose patches' normals differ less (degrees) is never a sharp edge, even "
      "with edge vertices; 0 is the paper's rule",
      ValueField<double>{&nested<&R::bands, &ClassificationOptions::smooth_border_angle_deg>}, true},
+    {"smooth-continuation-angle",
+     "a crossing edge whose two sides' fitted normal fields, carried to its middle, differ less "
+     "(degrees) continues one smooth surface and is not restored; 0 is the paper's rule",
+     ValueField<double>{&nested<&R::bands, &ClassificationOptions::smooth_continuation_angle_deg>},
+     true},
     {"placement",
      "new points where the band's sides meet: 'tangent-planes' is eq. 5.2 / 5.3 as the paper; "
-     "'second-order' meets their curved surfaces, on the edge of a hole or a scallop",
-     ChoiceField<PointPlacement>{&nested<&R::points, &SharpPointOptions::placement>, kPlacements},
-     true},
+     "'second-order' meets their fitted curved surfaces, on the edge of a hole or a scallop "
+     "(not yet the default: docs/method.md)",
+     ChoiceField<PointPlacement>{&nested<&R::points, &SharpPointOptions::placement>, kPlacements}},
     {"spike-angle",
      "corner points are refused when normals around the corner differ more (degrees, paper "
      "5.3)",

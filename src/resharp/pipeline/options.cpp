@@ -8,8 +8,8 @@ RestoreOptions paper_variant(RestoreOptions options) {
     options.features.keep_sharp_borders_apart = false;
     options.bands.unconfirmed_border_angle_deg = 180.0;
     options.bands.smooth_border_angle_deg = 0.0;
+    options.bands.smooth_continuation_angle_deg = 0.0;
     options.normals.estimate = NormalEstimate::AngleWeighted;
-    options.points.placement = PointPlacement::TangentPlanes;
     return options;
 }
 

@@ -109,6 +109,15 @@ std::vector<std::uint8_t> changed_faces(const PointSlots& before, const PointSlo
     return changed;
 }
 
+/// Whether two guard results accept the same slots with the same counts.
+[[maybe_unused]] bool same_guard(const GuardedPoints& a, const GuardedPoints& b) {
+    return a.accepted.edge_point == b.accepted.edge_point &&
+           a.accepted.corner_point == b.accepted.corner_point &&
+           a.report.refused_by_quality == b.report.refused_by_quality &&
+           a.report.refused_by_guard == b.report.refused_by_guard &&
+           a.report.repairs == b.report.repairs;
+}
+
 /// The input as its own split: no face replaced.
 SplitMesh unchanged(const Mesh& mesh) {
     SplitMesh out;
@@ -175,6 +184,8 @@ Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const Restor
         d.feature_normals =
             feature_normals(mesh, d.connectivity, d.normals.face, d.features.face_patch,
                             d.features.vertex_patch, d.bands, options.normals);
+        d.bands =
+            drop_smooth_crossings(mesh, d.connectivity, d.bands, d.feature_normals, options.bands);
     });
     return d;
 }
@@ -190,16 +201,23 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
                                       feature_normals, options.points);
     });
     std::vector<std::uint8_t> withdrawn(r.points.points.size(), 0);
-    PointSlots checked;  // the slots of the last split checked
+    std::vector<std::uint8_t> withdrawn_before;  // the flags of the last round's guard
+    std::vector<Index> harmful;                  // the faces the last check found harmful
+    GuardedPoints checked;                       // the last round's guard, its split checked
     // Bound: max_harm_rounds; and every round that does not end the loop withdraws at least one
     // point (harmful faces are split faces, which hold points).
     for (int round = 0; round < options.max_harm_rounds; ++round) {
         GuardedPoints guarded;
         clock.run(Stage::Guard, [&] {
-            // Nothing is withdrawn before the first check: no flags to read.
-            const std::span<const std::uint8_t> out =
-                round == 0 ? std::span<const std::uint8_t>{} : std::span(withdrawn);
-            guarded = guard_points(input, feature_normals, r.points, out, options.guard);
+            // Nothing is withdrawn before the first check: no flags to read. Later rounds guard
+            // again only the faces whose work the withdrawn points can change.
+            guarded = round == 0
+                          ? guard_points(input, feature_normals, r.points, {}, options.guard)
+                          : guard_points_again(input, feature_normals, r.points, checked,
+                                               withdrawn_before, withdrawn, harmful, options.guard);
+            RESHARP_EXPENSIVE_ASSERT(
+                round == 0 || same_guard(guarded, guard_points(input, feature_normals, r.points,
+                                                               withdrawn, options.guard)));
         });
         r.guard.refused_by_quality += guarded.report.refused_by_quality;
         r.guard.refused_by_guard += guarded.report.refused_by_guard;
@@ -213,13 +231,14 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
             // After the first round only the faces near those whose pieces changed are judged
             // again (check_harm()): the faces the last check found harmful lost their points.
             const std::vector<std::uint8_t> changed =
-                round == 0 ? std::vector<std::uint8_t>{} : changed_faces(checked, guarded.accepted);
+                round == 0 ? std::vector<std::uint8_t>{}
+                           : changed_faces(checked.accepted, guarded.accepted);
             harm = check_harm(input, r.output, options.harm, changed);
             RESHARP_EXPENSIVE_ASSERT(changed.empty() ||
                                      harm.harmful_faces ==
                                          check_harm(input, r.output, options.harm).harmful_faces);
         });
-        checked = std::move(guarded.accepted);
+        checked = std::move(guarded);
         ++r.rounds;
         if (round == 0) r.first_harm = harm;
         if (harm.is_harmless()) {
@@ -228,7 +247,9 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
             return r;
         }
         [[maybe_unused]] const std::size_t before = r.undone_points;
-        withdraw_points_of(harm.harmful_faces, checked, withdrawn, r.undone_points);
+        withdrawn_before = withdrawn;
+        withdraw_points_of(harm.harmful_faces, checked.accepted, withdrawn, r.undone_points);
+        harmful = std::move(harm.harmful_faces);
         RESHARP_ASSERT(r.undone_points > before);
     }
     r.rounds_exhausted = true;

@@ -4,6 +4,7 @@
 #include <numbers>
 #include <utility>
 
+#include "resharp/restoration/feature_normals.h"
 #include "resharp/segmentation/feature_segmentation.h"
 
 namespace resharp {
@@ -47,6 +48,39 @@ BandClassification classify_bands(const Mesh& mesh, const Connectivity& connecti
             if (confirmed && !face_normals[f].isZero(0.0) &&
                 !face_normals[face_of(twin)].isZero(0.0)) {
                 is_crossing[h] = is_crossing[twin] = 1;
+            }
+        }
+    }
+    return classify_faces(std::move(is_crossing));
+}
+
+BandClassification drop_smooth_crossings(const Mesh& mesh, const Connectivity& connectivity,
+                                         const BandClassification& bands,
+                                         const FeatureNormals& normals,
+                                         const ClassificationOptions& options) {
+    if (options.smooth_continuation_angle_deg <= 0.0) return bands;
+    const double min_cosine =
+        std::cos(options.smooth_continuation_angle_deg * std::numbers::pi / 180.0);
+    // The normal of v's side carried to x: a sharp edge's two sides keep their angle up to
+    // the edge, one smooth surface's meet there.
+    auto carried = [&](Index v, const Vec3& x) -> Vec3 {
+        if (normals.field.empty() || normals.field[v].n0.isZero(0.0)) return normals.normal[v];
+        const NormalField& field = normals.field[v];
+        return field.n0 + field.gradient * (x - mesh.positions[v]);
+    };
+    std::vector<std::uint8_t> is_crossing = bands.is_crossing;
+    for (Index f = 0; f < mesh.face_count(); ++f) {
+        const Triangle& t = mesh.triangles[f];
+        for (Index k = 0; k < 3; ++k) {
+            const Index h = 3 * f + k;
+            const Index twin = connectivity.twin[h];
+            if (!is_crossing[h] || twin < h) continue;  // each crossing edge once
+            const Index u = t[k], v = t[(k + 1) % 3];
+            if (normals.normal[u].isZero(0.0) || normals.normal[v].isZero(0.0)) continue;
+            const Vec3 middle = 0.5 * (mesh.positions[u] + mesh.positions[v]);
+            const Vec3 nu = carried(u, middle), nv = carried(v, middle);
+            if (nu.dot(nv) > min_cosine * nu.norm() * nv.norm()) {
+                is_crossing[h] = is_crossing[twin] = 0;
             }
         }
     }

@@ -9,6 +9,10 @@
 #include "resharp/mesh/mesh.h"
 
 namespace resharp {
+struct FeatureNormals;
+}
+
+namespace resharp {
 
 enum class BandRole : std::uint8_t {
     None,    ///< not touched by restoration
@@ -42,6 +46,15 @@ struct ClassificationOptions {
     /// curvature of a ball-end surface can flag their vertices as edge vertices. 0 is the
     /// paper's rule.
     double smooth_border_angle_deg = 15.0;
+    /// A crossing edge stays one only where the two sides' fitted normal fields
+    /// (feature_normals()), each carried to the edge's midpoint, still part by more than this
+    /// (degrees). On one smooth surface split into two patches (the facets of a cylinder a few
+    /// cells in radius turn by some 20 degrees from one to the next) the two fields meet there,
+    /// up to the roughness of the fits, however far the normal turns across the band; at a
+    /// sharp edge they part by the edge's angle. 25 degrees left the benchmark parts' rates
+    /// within 0.02 points (docs/method.md, "Smooth surfaces"). 0 keeps every crossing edge (the
+    /// paper's rule).
+    double smooth_continuation_angle_deg = 25.0;
 };
 
 /// Takes the connectivity, unit face normals (#F), the edge-vertex labels of segment_edges (#V)
@@ -54,6 +67,16 @@ BandClassification classify_bands(const Mesh& mesh, const Connectivity& connecti
                                   const std::vector<Index>& face_patch,
                                   const std::vector<Index>& vertex_patch,
                                   const ClassificationOptions& options = {});
+
+/// Takes a classification of classify_bands() and the feature normals computed on it, and gives
+/// the classification less the crossing edges whose two sides continue one smooth surface: the
+/// normal fields of its two vertices (FeatureNormals::field; eq. 5.1's normal without a slope
+/// where a vertex has none), each carried to the edge's midpoint, lie within
+/// options.smooth_continuation_angle_deg. Edges with no normal at either end are kept.
+BandClassification drop_smooth_crossings(const Mesh& mesh, const Connectivity& connectivity,
+                                         const BandClassification& bands,
+                                         const FeatureNormals& normals,
+                                         const ClassificationOptions& options = {});
 
 /// Takes per-half-edge crossing flags (#3F, set on both halves of each crossing edge, which must
 /// be manifold) and gives the classification they make: a face with one or two crossing edges is

@@ -5,13 +5,13 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <span>
 
 #include "resharp/core/errors.h"
 #include "resharp/mesh/geometry.h"
-#include "resharp/surfaces/local_quadric.h"
 
 namespace resharp {
 namespace {
@@ -22,6 +22,9 @@ void validate(const FeatureNormalOptions& o) {
     }
     if (!(o.max_fit_residual_deg >= 0.0 && o.max_fit_residual_deg <= 180.0)) {
         throw InvalidInput("largest fit residual must lie in [0, 180] degrees");
+    }
+    if (!(o.near_face_angle_deg >= 0.0 && o.near_face_angle_deg <= 180.0)) {
+        throw InvalidInput("near-face angle must lie in [0, 180] degrees");
     }
 }
 
@@ -67,35 +70,51 @@ Vec3 neighbours_patch_normal(const Mesh& mesh, const Connectivity& c,
     return length > 0.0 ? Vec3(sum / length) : Vec3::Zero();
 }
 
-/// The faces wholly on v's patch around v and around its same-patch neighbours, each once, in
-/// the order first met. A face met again contains v or a neighbour already taken, which is
-/// cheaper to test than searching the list.
-void fit_faces(const Mesh& mesh, const Connectivity& c, const std::vector<Index>& face_patch,
-               const std::vector<Index>& vertex_patch, Index v, std::vector<Index>& out,
-               std::vector<Index>& taken) {
+/// The faces around v and around those of its neighbours that `follow` admits, each once, in
+/// the order first met, that `accept` admits. A face met again contains v or a neighbour
+/// already taken, which is cheaper to test than searching the list.
+template <class Follow, class Accept>
+void gather_faces(const Mesh& mesh, const Connectivity& c, Index v, Follow&& follow,
+                  Accept&& accept, std::vector<Index>& out, std::vector<Index>& taken) {
     out.clear();
     taken.assign(1, v);
-    const Index patch = vertex_patch[v];
     auto met_before = [&](const Triangle& t) {
         return std::any_of(taken.begin(), taken.end(),
                            [&](Index q) { return t[0] == q || t[1] == q || t[2] == q; });
     };
     auto take_ring = [&](Index q) {
         for (Index f : c.faces_around(q)) {
-            const Triangle& t = mesh.triangles[f];
-            if (face_patch[f] == patch && lies_on_patch(t, vertex_patch, patch) &&
-                (q == v || !met_before(t))) {
-                out.push_back(f);
-            }
+            if (accept(f) && (q == v || !met_before(mesh.triangles[f]))) out.push_back(f);
         }
         if (q != v) taken.push_back(q);
     };
     take_ring(v);
     for_each_ring_vertex(mesh, c, v, [&](Index q) {
-        if (vertex_patch[q] == patch && std::find(taken.begin(), taken.end(), q) == taken.end()) {
-            take_ring(q);
-        }
+        if (follow(q) && std::find(taken.begin(), taken.end(), q) == taken.end()) take_ring(q);
     });
+}
+
+/// The faces wholly on v's patch around v and around its same-patch neighbours.
+void fit_faces(const Mesh& mesh, const Connectivity& c, const std::vector<Index>& face_patch,
+               const std::vector<Index>& vertex_patch, Index v, std::vector<Index>& out,
+               std::vector<Index>& taken) {
+    const Index patch = vertex_patch[v];
+    gather_faces(
+        mesh, c, v, [&](Index q) { return vertex_patch[q] == patch; },
+        [&](Index f) {
+            return face_patch[f] == patch && lies_on_patch(mesh.triangles[f], vertex_patch, patch);
+        },
+        out, taken);
+}
+
+/// The faces of any patch around v and its neighbours whose normals lie within the angle of
+/// `min_cosine` of n.
+void near_faces(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>& normals, Index v,
+                const Vec3& n, double min_cosine, std::vector<Index>& out,
+                std::vector<Index>& taken) {
+    gather_faces(
+        mesh, c, v, [](Index) { return true; },
+        [&](Index f) { return normals[f].dot(n) > min_cosine; }, out, taken);
 }
 
 /// The linear model of fit_normal_at: per face the row (1, u, w) of its centroid's offset from
@@ -109,7 +128,9 @@ struct FitSamples {
 };
 
 void fill_samples(const Mesh& mesh, const std::vector<Vec3>& normals, std::span<const Index> faces,
-                  Index v, const Vec3& t1, const Vec3& t2, FitSamples& samples) {
+                  Index v, const Vec3& guess, FitSamples& samples) {
+    const Vec3 t1 = guess.unitOrthogonal();
+    const Vec3 t2 = guess.cross(t1);
     samples.rows.clear();
     samples.normals.clear();
     samples.use.assign(faces.size(), 1);
@@ -143,22 +164,15 @@ std::optional<Eigen::Matrix3d> solve_fit(const FitSamples& s) {
     return Eigen::Matrix3d(ata.ldlt().solve(atb));
 }
 
-/// What the linear fit of the normals gives at a vertex.
-struct NormalFit {
-    Vec3 normal;            ///< unit
-    Eigen::Matrix3d slope;  ///< the unit normal's derivative: d -> change of normal for step d
-};
-
 /// Least-squares fit n(x) = n0 + a u + b w of the face normals over the faces' centroids, with
 /// (u, w) the centroid's offset from v in the tangent plane of `guess`, refitted once without
 /// the faces whose residual exceeds `max_residual` (radians, as a chord of unit normals);
-/// returns n0 normalised and the slope, or nullopt when the centroids do not span the plane.
-std::optional<NormalFit> fit_normal_at(const Mesh& mesh, const std::vector<Vec3>& normals,
-                                       std::span<const Index> faces, Index v, const Vec3& guess,
-                                       double max_residual, FitSamples& samples) {
-    const Vec3 t1 = guess.unitOrthogonal();
-    const Vec3 t2 = guess.cross(t1);
-    fill_samples(mesh, normals, faces, v, t1, t2, samples);
+/// returns the field with n0, the fitted normal at v, made unit, or nullopt when the centroids
+/// do not span the plane.
+std::optional<NormalField> fit_normal_at(const Mesh& mesh, const std::vector<Vec3>& normals,
+                                         std::span<const Index> faces, Index v, const Vec3& guess,
+                                         double max_residual, FitSamples& samples) {
+    fill_samples(mesh, normals, faces, v, guess, samples);
     const double max_residual2 = max_residual * max_residual;
     std::optional<Eigen::Matrix3d> fit = solve_fit(samples);
     if (!fit) return std::nullopt;
@@ -171,18 +185,19 @@ std::optional<NormalFit> fit_normal_at(const Mesh& mesh, const std::vector<Vec3>
     if (trimmed) fit = solve_fit(samples);
     if (!fit) return std::nullopt;
     const Vec3 n0 = fit->row(0).transpose();
-    if (!n0.allFinite() || n0.isZero(0.0)) return std::nullopt;
-    // n0 + a u + b w normalised: its derivative is (a t1^T + b t2^T) / |n0| once the part along
-    // the normal is dropped, which quadric_from_normal_slope() does.
-    const Eigen::Matrix3d slope =
-        (fit->row(1).transpose() * t1.transpose() + fit->row(2).transpose() * t2.transpose()) /
-        n0.norm();
-    return NormalFit{n0.normalized(), slope};
+    if (!n0.allFinite() || n0.isZero(0.0) || !fit->allFinite()) return std::nullopt;
+    const Vec3 t1 = guess.unitOrthogonal();  // the tangent frame of fill_samples
+    const Vec3 t2 = guess.cross(t1);
+    const double length = n0.norm();
+    return NormalField{n0 / length, (fit->row(1).transpose() * t1.transpose() +
+                                     fit->row(2).transpose() * t2.transpose()) /
+                                        length};
 }
 
 struct FitLimits {
     double min_cosine;    ///< of the largest correction of eq. 5.1's normal
     double max_residual;  ///< chord between a face normal and the first fit
+    double near_cosine;   ///< of the widest angle to eq. 5.1's normal of near_faces()
 };
 
 /// Buffers one worker reuses for every vertex.
@@ -201,21 +216,33 @@ bool coplanar(const std::vector<Vec3>& normals, std::span<const Index> faces) {
 
 /// Replaces eq. 5.1's normal n at v by the linear fit where the fit is well posed, not planar
 /// and corrects n by less than the limit; `correction` gets the angle (degrees) it moved n by
-/// and `curvature` the fit's second-order shape in tangent_frame(n).
+/// and `field` the fit's field.
 void refine_by_fit(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>& normals,
                    const std::vector<Index>& face_patch, const std::vector<Index>& vertex_patch,
-                   Index v, const FitLimits& limits, Vec3& n, float& correction,
-                   Eigen::Vector3f& curvature, FitScratch& scratch) {
+                   Index v, const FitLimits& limits, Vec3& n, float& correction, NormalField& field,
+                   FitScratch& scratch) {
     fit_faces(mesh, c, face_patch, vertex_patch, v, scratch.faces, scratch.taken);
     if (scratch.faces.empty() || coplanar(normals, scratch.faces)) return;
     const auto fitted =
         fit_normal_at(mesh, normals, scratch.faces, v, n, limits.max_residual, scratch.samples);
-    if (fitted && fitted->normal.dot(n) > limits.min_cosine) {
-        correction = static_cast<float>(angle_deg(fitted->normal, n));
-        n = fitted->normal;
-        curvature =
-            quadric_from_normal_slope(mesh.positions[v], n, fitted->slope).curvature.cast<float>();
+    if (fitted && fitted->n0.dot(n) > limits.min_cosine) {
+        correction = static_cast<float>(angle_deg(fitted->n0, n));
+        n = fitted->n0;
+        field = *fitted;
+        return;
     }
+    // Eq. 5.1's normal stays, but how the feature turns still tells one smooth surface from
+    // two (drop_smooth_crossings): on coarse facets of a small radius the faces stray from any
+    // linear field by more than the trimming allows, so that field comes from all of them.
+    const double all = std::numeric_limits<double>::infinity();
+    auto untrimmed = fit_normal_at(mesh, normals, scratch.faces, v, n, all, scratch.samples);
+    if (!untrimmed) {
+        // A patch one strip of facets wide (a cylinder a few cells in radius, along a grid
+        // axis) cannot tell the slope across it: the faces near v that lie near its normal can.
+        near_faces(mesh, c, normals, v, n, limits.near_cosine, scratch.faces, scratch.taken);
+        untrimmed = fit_normal_at(mesh, normals, scratch.faces, v, n, all, scratch.samples);
+    }
+    if (untrimmed) field = *untrimmed;
 }
 
 }  // namespace
@@ -229,16 +256,16 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
     validate(options);
     const double degree = std::numbers::pi / 180.0;
     const FitLimits fit{std::cos(options.max_fit_correction_deg * degree),
-                        2.0 * std::sin(options.max_fit_residual_deg * degree / 2.0)};
+                        2.0 * std::sin(options.max_fit_residual_deg * degree / 2.0),
+                        std::cos(options.near_face_angle_deg * degree)};
     std::vector<std::uint8_t> needed(mesh.vertex_count(), 0);
     for (Index f = 0; f < mesh.face_count(); ++f) {
         if (bands.face_role[f] == BandRole::None) continue;
         for (Index v : mesh.triangles[f]) needed[v] = 1;
     }
-    FeatureNormals result{
-        std::vector<Vec3>(mesh.vertex_count(), Vec3::Zero()),
-        std::vector<float>(mesh.vertex_count(), 0.0f),
-        std::vector<Eigen::Vector3f>(mesh.vertex_count(), Eigen::Vector3f::Zero())};
+    FeatureNormals result{std::vector<Vec3>(mesh.vertex_count(), Vec3::Zero()),
+                          std::vector<float>(mesh.vertex_count(), 0.0f),
+                          std::vector<NormalField>(mesh.vertex_count(), NormalField{})};
     tbb::parallel_for(
         tbb::blocked_range<Index>(0, static_cast<Index>(mesh.vertex_count()), 4096),
         [&](const auto& range) {
@@ -253,8 +280,7 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
                 }
                 if (options.estimate == NormalEstimate::LinearFit && !n.isZero(0.0)) {
                     refine_by_fit(mesh, connectivity, face_normals, face_patch, vertex_patch, v,
-                                  fit, n, result.fit_correction_deg[v], result.curvature[v],
-                                  scratch);
+                                  fit, n, result.fit_correction_deg[v], result.field[v], scratch);
                 }
                 result.normal[v] = n;
             }

@@ -1,7 +1,6 @@
 #pragma once
 /// Feature normals at the vertices of edge and corner triangles (paper §5.1, eq. 5.1).
 
-#include <Eigen/Core>
 #include <vector>
 
 #include "resharp/mesh/connectivity.h"
@@ -32,6 +31,17 @@ struct FeatureNormalOptions {
     /// a scallop cusp that region growing let into the patch are not, and would tilt the fit.
     /// 180 keeps every face.
     double max_fit_residual_deg = 1.4;
+    /// Where the feature's own faces cannot be fitted (a patch one strip of facets wide), the
+    /// normal field of NormalField is fitted to the faces near the vertex, of any patch, whose
+    /// normals lie within this angle (degrees) of the vertex's eq. 5.1 normal. It only serves
+    /// to tell one smooth surface from two (drop_smooth_crossings), not to place points.
+    double near_face_angle_deg = 25.0;
+};
+
+/// A normal field about a vertex x_v: n(x) = n0 + gradient (x - x_v), n0 unit.
+struct NormalField {
+    Vec3 n0 = Vec3::Zero();                              ///< zero: no field
+    Eigen::Matrix3d gradient = Eigen::Matrix3d::Zero();  ///< d n / d x, 1/mm
 };
 
 struct FeatureNormals {
@@ -40,10 +50,11 @@ struct FeatureNormals {
     /// a few degrees on curved features. The split keeps that much margin when it checks that
     /// pieces face the way of their surface.
     std::vector<float> fit_correction_deg;
-    /// Per vertex (#V): the second-order shape of the vertex's own feature from the linear fit,
-    /// a, b, c of LocalQuadric in tangent_frame(normal) (1/mm); zero where the fit was not used
-    /// (planes, eq. 5.1 kept), so there the feature is taken as its tangent plane.
-    std::vector<Eigen::Vector3f> curvature;
+    /// Per vertex (#V, or empty): the feature's normal field about the vertex as the linear fit
+    /// found it (NormalEstimate::LinearFit; zero where there was none, as on planes), also where
+    /// the fit was not trusted to replace eq. 5.1's normal. drop_smooth_crossings() carries it
+    /// across a band.
+    std::vector<NormalField> field;
 };
 
 /// Per vertex (#V): at each vertex of an edge or corner triangle, N = sum(theta_i N_i) /

@@ -235,6 +235,42 @@ private:
     std::vector<std::uint8_t> snapped_;  ///< per half-edge (#3F): its edge was snapped once
 };
 
+/// Every slot of `accepted` holds the point it held among the candidates, its face's corner
+/// point (a snapped edge), or none: the guard only takes away.
+[[maybe_unused]] bool only_takes_away(const PointSlots& accepted, const SharpPoints& candidates,
+                                      const Connectivity& c) {
+    for (Index h = 0; h < accepted.edge_point.size(); ++h) {
+        const Index id = accepted.edge_point[h];
+        if (id == kNoIndex || id == candidates.slots.edge_point[h]) continue;
+        const Index twin = c.twin[h];
+        const bool is_corner_of_a_face =
+            id == candidates.slots.corner_point[face_of(h)] ||
+            (twin != kNoIndex && id == candidates.slots.corner_point[face_of(twin)]);
+        if (!is_corner_of_a_face) return false;
+    }
+    for (Index f = 0; f < accepted.corner_point.size(); ++f) {
+        const Index id = accepted.corner_point[f];
+        if (id != kNoIndex && id != candidates.slots.corner_point[f]) return false;
+    }
+    return true;
+}
+
+/// Whether point p was withdrawn (an empty list withdraws none).
+bool is_withdrawn(std::span<const std::uint8_t> withdrawn, Index p) {
+    return !withdrawn.empty() && withdrawn[p] != 0;
+}
+
+/// Face f's candidate slots less the withdrawn points, written into the slots of face `into`
+/// of `slots`.
+void start_face(const SharpPoints& candidates, std::span<const std::uint8_t> withdrawn, Index f,
+                PointSlots& slots, Index into) {
+    auto kept = [&](Index p) { return p == kNoIndex || is_withdrawn(withdrawn, p) ? kNoIndex : p; };
+    for (Index k = 0; k < 3; ++k) {
+        slots.edge_point[3 * into + k] = kept(candidates.slots.edge_point[3 * f + k]);
+    }
+    slots.corner_point[into] = kept(candidates.slots.corner_point[f]);
+}
+
 /// The candidates' slots less the withdrawn points.
 PointSlots starting_slots(const SharpPoints& candidates, std::span<const std::uint8_t> withdrawn) {
     PointSlots slots = candidates.slots;
@@ -256,31 +292,119 @@ std::vector<Index> faces_with_points(const PointSlots& slots) {
     return faces;
 }
 
-/// Every slot of `accepted` holds the point it held among the candidates, its face's corner
-/// point (a snapped edge), or none: the guard only takes away.
-[[maybe_unused]] bool only_takes_away(const PointSlots& accepted, const SharpPoints& candidates,
-                                      const Connectivity& c) {
-    for (Index h = 0; h < accepted.edge_point.size(); ++h) {
-        const Index id = accepted.edge_point[h];
-        if (id == kNoIndex || id == candidates.slots.edge_point[h]) continue;
-        const Index twin = c.twin[h];
-        const bool is_corner_of_a_face =
-            id == candidates.slots.corner_point[face_of(h)] ||
-            (twin != kNoIndex && id == candidates.slots.corner_point[face_of(twin)]);
-        if (!is_corner_of_a_face) return false;
-    }
-    for (Index f = 0; f < accepted.corner_point.size(); ++f) {
-        const Index id = accepted.corner_point[f];
-        if (id != kNoIndex && id != candidates.slots.corner_point[f]) return false;
-    }
-    return true;
+/// Whether the slots of face fa in `a` are those of face fb in `b`.
+bool same_slots(const PointSlots& a, Index fa, const PointSlots& b, Index fb) {
+    return a.corner_point[fa] == b.corner_point[fb] &&
+           std::equal(a.edge_point.begin() + 3 * fa, a.edge_point.begin() + 3 * fa + 3,
+                      b.edge_point.begin() + 3 * fb);
 }
 
-}  // namespace
+/// The faces a later guard run works on again, ascending, and per face (#F) 1 for those on
+/// the border of that region (see faces_to_guard_again).
+struct GuardAgain {
+    std::vector<Index> faces;
+    std::vector<std::uint8_t> is_border;
+};
 
-GuardedPoints guard_points(const InputSurface& input, const FeatureNormals& feature_normals,
-                           const SharpPoints& candidates, std::span<const std::uint8_t> withdrawn,
-                           const GuardOptions& options) {
+/// The faces to guard again after more points were withdrawn: the faces that had points at the
+/// last run's start (candidates less `before`) reached, across edges between such faces, from
+/// one that lost a point since (one of `now` but not of `before`; every such face is one of
+/// `holders` or lies across an edge of one). The search stops at the faces the last run left
+/// alone (never repaired, slots as they started), which become the border, unless
+/// `expand_anyway` (#F) marks them. A repair of a border face, or a change to its slots, is the
+/// only way the faces beyond can be drawn in (they push only their neighbours, and pushing a
+/// face left alone does nothing), so the region suffices if the run leaves its border alone.
+/// Bound: each face joins the list once, and is looked at from its three edges.
+GuardAgain faces_to_guard_again(const Connectivity& c, const SharpPoints& candidates,
+                                const GuardedPoints& previous, std::span<const std::uint8_t> before,
+                                std::span<const std::uint8_t> now, std::span<const Index> holders,
+                                const std::vector<std::uint8_t>& expand_anyway) {
+    const PointSlots& slots = candidates.slots;
+    const std::size_t face_count = slots.corner_point.size();
+    auto had_points = [&](Index f) {
+        bool any = false;
+        slots.for_each_point(f, [&](Index p) { any = any || !is_withdrawn(before, p); });
+        return any;
+    };
+    auto lost_a_point = [&](Index f) {
+        bool lost = false;
+        slots.for_each_point(
+            f, [&](Index p) { lost = lost || (now[p] != 0 && !is_withdrawn(before, p)); });
+        return lost;
+    };
+    std::vector<std::uint8_t> repaired(face_count, 0);
+    for (const GuardRepair& r : previous.repairs) repaired[r.face] = 1;
+    PointSlots started{std::vector<Index>(3), std::vector<Index>(1)};  // one face's start
+    auto left_alone = [&](Index f) {
+        if (repaired[f] || expand_anyway[f]) return false;
+        start_face(candidates, before, f, started, 0);
+        return same_slots(started, 0, previous.accepted, f);
+    };
+    GuardAgain again{{}, std::vector<std::uint8_t>(face_count, 0)};
+    std::vector<std::uint8_t> marked(face_count, 0);
+    std::vector<Index> expand;  // the faces whose neighbours join
+    auto seed = [&](Index f) {
+        if (marked[f] || !lost_a_point(f)) return;
+        marked[f] = 1;
+        expand.push_back(f);
+    };
+    for (Index f : holders) {
+        seed(f);
+        for (Index k = 0; k < 3; ++k) {
+            if (c.twin[3 * f + k] != kNoIndex) seed(face_of(c.twin[3 * f + k]));
+        }
+    }
+    again.faces = expand;
+    for (std::size_t i = 0; i < expand.size(); ++i) {
+        for (Index k = 0; k < 3; ++k) {
+            const Index twin = c.twin[3 * expand[i] + k];
+            if (twin == kNoIndex) continue;
+            const Index g = face_of(twin);
+            if (marked[g] || !had_points(g)) continue;
+            marked[g] = 1;
+            again.faces.push_back(g);
+            if (left_alone(g)) {
+                again.is_border[g] = 1;
+            } else {
+                expand.push_back(g);
+            }
+        }
+    }
+    std::sort(again.faces.begin(), again.faces.end());
+    return again;
+}
+
+/// Checks the faces of `first` (ascending) and repairs the faulty ones, appending each repair
+/// to `log`. Bound: a face is popped once at the start and once per repair of a face across
+/// one of its edges; repairs are bounded as Repairs says (GuardReport::repairs).
+void repair_faults(const Connectivity& c, std::span<const Index> first, Repairs& repairs,
+                   std::vector<GuardRepair>& log) {
+    Worklist work(repairs.slots().corner_point.size(), first);
+    while (!work.empty()) {
+        const Index f = work.pop();
+        if (!repairs.slots().has_points(f)) continue;
+        const Fault fault = repairs.fault_of(f);
+        if (fault == Fault::None) continue;
+        const std::size_t dropped = repairs.repair(f);
+        log.push_back({f, fault == Fault::Quality, static_cast<std::uint32_t>(dropped)});
+        for (Index k = 0; k < 3; ++k) {
+            const Index twin = c.twin[3 * f + k];
+            if (twin != kNoIndex) work.push(face_of(twin));
+        }
+    }
+}
+
+GuardReport report_of(const std::vector<GuardRepair>& log) {
+    GuardReport report;
+    for (const GuardRepair& r : log) {
+        (r.by_quality ? report.refused_by_quality : report.refused_by_guard) += r.dropped;
+    }
+    report.repairs = log.size();
+    return report;
+}
+
+void validate(const GuardOptions& options, const SharpPoints& candidates,
+              std::span<const std::uint8_t> withdrawn) {
     if (!(options.thin_material_angle_deg > 0.0 && options.thin_material_angle_deg <= 180.0)) {
         throw InvalidInput("guard: thin-material angle must lie in (0, 180] degrees");
     }
@@ -288,32 +412,89 @@ GuardedPoints guard_points(const InputSurface& input, const FeatureNormals& feat
         throw InvalidInput("guard: " + std::to_string(withdrawn.size()) + " withdrawal flags for " +
                            std::to_string(candidates.points.size()) + " points");
     }
+}
+
+/// The guard on `slots`, starting from the faces `first` (ascending); `log` holds the repairs
+/// kept from an earlier run, if any.
+GuardedPoints guard_slots(const InputSurface& input, const FeatureNormals& feature_normals,
+                          const SharpPoints& candidates, PointSlots slots,
+                          std::span<const Index> first, std::vector<GuardRepair> log,
+                          const GuardOptions& options) {
     const PieceVertices ids(input.mesh, candidates.points);
     const ReferenceNormals reference{feature_normals, input.normals.vertex};
     const PieceJudge judge(input, reference, ids, options.thin_material_angle_deg);
-    Repairs repairs(input.connectivity, starting_slots(candidates, withdrawn), judge);
-    const std::vector<Index> touched = faces_with_points(repairs.slots());
-
-    // Bound: a face is popped once at the start and once per repair of a face across one of
-    // its edges; repairs are bounded as Repairs says (GuardReport::repairs).
-    GuardReport report;
-    Worklist work(input.mesh.face_count(), touched);
-    while (!work.empty()) {
-        const Index f = work.pop();
-        if (!repairs.slots().has_points(f)) continue;
-        const Fault fault = repairs.fault_of(f);
-        if (fault == Fault::None) continue;
-        (fault == Fault::Quality ? report.refused_by_quality : report.refused_by_guard) +=
-            repairs.repair(f);
-        ++report.repairs;
-        for (Index k = 0; k < 3; ++k) {
-            const Index twin = input.connectivity.twin[3 * f + k];
-            if (twin != kNoIndex) work.push(face_of(twin));
-        }
-    }
-    GuardedPoints out{repairs.slots(), report};
+    Repairs repairs(input.connectivity, std::move(slots), judge);
+    repair_faults(input.connectivity, first, repairs, log);
+    GuardedPoints out{repairs.slots(), report_of(log), std::move(log)};
     RESHARP_EXPENSIVE_ASSERT(only_takes_away(out.accepted, candidates, input.connectivity));
     return out;
+}
+
+}  // namespace
+
+GuardedPoints guard_points(const InputSurface& input, const FeatureNormals& feature_normals,
+                           const SharpPoints& candidates, std::span<const std::uint8_t> withdrawn,
+                           const GuardOptions& options) {
+    validate(options, candidates, withdrawn);
+    PointSlots slots = starting_slots(candidates, withdrawn);
+    const std::vector<Index> first = faces_with_points(slots);
+    return guard_slots(input, feature_normals, candidates, std::move(slots), first, {}, options);
+}
+
+GuardedPoints guard_points_again(const InputSurface& input, const FeatureNormals& feature_normals,
+                                 const SharpPoints& candidates, const GuardedPoints& previous,
+                                 std::span<const std::uint8_t> withdrawn_before,
+                                 std::span<const std::uint8_t> withdrawn,
+                                 std::span<const Index> holders, const GuardOptions& options) {
+    validate(options, candidates, withdrawn_before);
+    validate(options, candidates, withdrawn);
+    for (Index f : holders) {
+        if (f >= input.mesh.face_count()) {
+            throw InvalidInput("guard: holder face " + std::to_string(f) + " of " +
+                               std::to_string(input.mesh.face_count()));
+        }
+    }
+    if (withdrawn.empty()) return guard_points(input, feature_normals, candidates, {}, options);
+    auto guard_region = [&](const GuardAgain& again) {
+        std::vector<std::uint8_t> is_again(input.mesh.face_count(), 0);
+        for (Index f : again.faces) is_again[f] = 1;
+        // The region starts from the candidates; the faces beyond keep what they came to.
+        PointSlots slots = previous.accepted;
+        std::vector<Index> first;
+        for (Index f : again.faces) {
+            start_face(candidates, withdrawn, f, slots, f);
+            if (slots.has_points(f)) first.push_back(f);
+        }
+        std::vector<GuardRepair> kept;
+        for (const GuardRepair& r : previous.repairs) {
+            if (!is_again[r.face]) kept.push_back(r);
+        }
+        return guard_slots(input, feature_normals, candidates, std::move(slots), first,
+                           std::move(kept), options);
+    };
+    // Guarded again until the run leaves the border alone: a second time with the border
+    // faces it did not leave alone searched across, then (the cascade goes on) with every face
+    // searched across, which stops at no border. Bound: three runs.
+    std::vector<std::uint8_t> expand_anyway(input.mesh.face_count(), 0);
+    for (int run = 0;; ++run) {
+        if (run == 2) std::fill(expand_anyway.begin(), expand_anyway.end(), 1);
+        const GuardAgain region =
+            faces_to_guard_again(input.connectivity, candidates, previous, withdrawn_before,
+                                 withdrawn, holders, expand_anyway);
+        GuardedPoints out = guard_region(region);
+        bool border_left_alone = true;
+        for (const GuardRepair& r : out.repairs) {
+            if (!region.is_border[r.face]) continue;
+            expand_anyway[r.face] = 1;
+            border_left_alone = false;
+        }
+        for (Index f : region.faces) {
+            if (!region.is_border[f] || same_slots(out.accepted, f, previous.accepted, f)) continue;
+            expand_anyway[f] = 1;
+            border_left_alone = false;
+        }
+        if (border_left_alone) return out;
+    }
 }
 
 }  // namespace resharp

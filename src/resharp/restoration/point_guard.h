@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "resharp/restoration/feature_normals.h"
 #include "resharp/restoration/input_surface.h"
@@ -31,9 +32,19 @@ struct GuardReport {
     std::size_t repairs = 0;
 };
 
+/// One repair as the guard made it.
+struct GuardRepair {
+    Index face = kNoIndex;      ///< the face repaired
+    bool by_quality = false;    ///< its fault: quality (true) or the guard's own (false)
+    std::uint32_t dropped = 0;  ///< points it dropped
+};
+
 struct GuardedPoints {
     PointSlots accepted;  ///< the candidates' slots with the refused points cleared
-    GuardReport report;
+    GuardReport report;   ///< the sums of `repairs`
+    /// Every repair made, in the order made (guard_points_again(): those it kept first, then
+    /// those it made): what a later round keeps of the faces it need not guard again.
+    std::vector<GuardRepair> repairs;
 };
 
 /// Takes the input surface, the feature normals with their fit corrections (#V), the placed
@@ -45,5 +56,23 @@ struct GuardedPoints {
 GuardedPoints guard_points(const InputSurface& input, const FeatureNormals& feature_normals,
                            const SharpPoints& candidates, std::span<const std::uint8_t> withdrawn,
                            const GuardOptions& options = {});
+
+/// A later round's guard: takes what guard_points() takes, the result `previous` it gave for
+/// the withdrawal flags `withdrawn_before` (empty: none), the flags `withdrawn` now (a
+/// superset), and `holders`, faces whose slots in `previous` held every point withdrawn since
+/// (such as the faces the harm check found harmful); gives exactly what guard_points() gives
+/// for `withdrawn` (slots, report, and the same repairs in another order), guarding again only
+/// the faces whose work can differ. The guard's work on a face reads and writes the slots of
+/// the face and of the faces across its edges and nothing else, so the faces beyond a border
+/// of faces the last run left alone (never repaired, slots as they started) keep their slots
+/// and repairs as long as this run leaves that border alone too; where it does not, the region
+/// grows past it and is guarded again.
+/// \throws InvalidInput as guard_points() does, if `withdrawn_before` is neither empty nor one
+///         flag per candidate point, or if a holder is not a face.
+GuardedPoints guard_points_again(const InputSurface& input, const FeatureNormals& feature_normals,
+                                 const SharpPoints& candidates, const GuardedPoints& previous,
+                                 std::span<const std::uint8_t> withdrawn_before,
+                                 std::span<const std::uint8_t> withdrawn,
+                                 std::span<const Index> holders, const GuardOptions& options = {});
 
 }  // namespace resharp

@@ -15,6 +15,10 @@ namespace {
 /// would move by more than about 1e6 edge lengths per unit of normal error.
 constexpr double kParallelSine = 1e-6;
 
+/// Eq. 5.4's product, relative to |D|^2, below which its sign is rounding: D and the normals
+/// carry relative errors near 1e-15 in any coordinates a part is given in.
+constexpr double kFlipMargin = 1e-12;
+
 /// The point x with n_i . x = d_i for three unit normals, by Cramer's rule in vector form:
 /// x = (d_1 (n_2 x n_3) + d_2 (n_3 x n_1) + d_3 (n_1 x n_2)) / (n_1 . (n_2 x n_3)). The
 /// determinant is the volume the unit normals span: a scale-free conditioning test.
@@ -44,7 +48,11 @@ bool passes_flip_test(const Vec3& a, const Vec3& n_a, const Vec3& b, const Vec3&
     const Vec3 d = (b - a) - (b - a).dot(n2) * n2;  // D: a-b seen in the section normal to N_2
     const Vec3 n20 = n2.cross(n_a);                 // trace of plane a in that section
     const Vec3 n21 = n2.cross(n_b);                 // trace of plane b
-    return n20.cross(d).dot(n2) * n21.cross(d).dot(n2) < 0.0;  // eq. 5.4
+    // Eq. 5.4 in units of |D|^2 (the product of the sines of D's angles to the two traces): a
+    // product within rounding of zero (D along a trace, the point at a or b) is refused
+    // whatever the part's scale or placement, instead of going the way its last bits do.
+    const double sides = n20.cross(d).dot(n2) * n21.cross(d).dot(n2);
+    return sides < -kFlipMargin * d.squaredNorm();
 }
 
 std::optional<Vec3> corner_point(const Vec3& a, const Vec3& n_a, const Vec3& b, const Vec3& n_b,
@@ -85,11 +93,19 @@ public:
     }
 
 private:
-    bool flat(Index v) const { return features_.curvature[v].isZero(0.0f); }
+    /// True unless v's normal is its feature's fitted field (the fit was trusted to place the
+    /// normal, so its slope shapes the surface too); fields kept only to tell smooth from sharp
+    /// (drop_smooth_crossings) and planes, whose field is zero, give the tangent plane.
+    bool flat(Index v) const {
+        return features_.field.size() != features_.normal.size() ||
+               features_.field[v].n0 != features_.normal[v] ||
+               features_.field[v].gradient.isZero(0.0);
+    }
 
     LocalQuadric surface(Index v) const {
         const Vec3& n = features_.normal[v];
-        return {mesh_.positions[v], tangent_frame(n), features_.curvature[v].cast<double>()};
+        if (flat(v)) return {mesh_.positions[v], tangent_frame(n), Eigen::Vector3d::Zero()};
+        return quadric_from_normal_slope(mesh_.positions[v], n, features_.field[v].gradient);
     }
 
     /// Lengths in units of the band's edges: converged to 1e-9 of them; a step at most half one.

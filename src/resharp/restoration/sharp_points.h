@@ -2,8 +2,8 @@
 /// New points on the ideal sharp edges and corners (paper §5.2-5.3): one per crossing edge where
 /// the two sides' surfaces meet, one per corner triangle where three meet, each kept only if it
 /// passes the flip test (eq. 5.4-5.5) or the spike test. The sides' surfaces are their tangent
-/// planes (eq. 5.2, 5.3) or, by default, their second-order fits (surfaces/local_quadric.h),
-/// which meet on a curved edge where the planes meet off it.
+/// planes (eq. 5.2, 5.3) or their second-order fits (surfaces/local_quadric.h), which meet on a
+/// curved edge where the planes meet off it.
 
 #include <cstdint>
 #include <optional>
@@ -20,14 +20,16 @@ namespace resharp {
 enum class PointPlacement {
     /// Eq. 5.2 / 5.3: the feature's tangent planes at the band vertices (the paper).
     TangentPlanes,
-    /// The features' second-order surfaces (FeatureNormals::curvature) at the band vertices,
+    /// The features' second-order surfaces (FeatureNormals::field) at the band vertices,
     /// met by Newton's method from the tangent planes' point; that point where they do not meet
     /// within a crossing edge's length of it.
     SecondOrder,
 };
 
 struct SharpPointOptions {
-    PointPlacement placement = PointPlacement::SecondOrder;
+    /// Tangent planes by default until second-order placement turns no face on every corpus
+    /// part (docs/method.md, "Second-order placement").
+    PointPlacement placement = PointPlacement::TangentPlanes;
     /// §5.3: a corner point is refused when two of the normals around the corner triangle
     /// differ by more than this (degrees): nearly opposite normals make a spike.
     double spike_angle_deg = 150.0;
@@ -88,7 +90,7 @@ bool passes_flip_test(const Vec3& a, const Vec3& n_a, const Vec3& b, const Vec3&
 std::optional<Vec3> corner_point(const Vec3& a, const Vec3& n_a, const Vec3& b, const Vec3& n_b,
                                  const Vec3& c, const Vec3& n_c);
 
-/// Takes the classification and the feature normals and curvatures (#V) and gives the accepted
+/// Takes the classification and the feature normals and their fields (#V) and gives the accepted
 /// points.
 /// \throws InvalidInput if an option is out of range.
 SharpPoints place_sharp_points(const Mesh& mesh, const Connectivity& connectivity,
