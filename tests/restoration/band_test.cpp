@@ -167,10 +167,10 @@ TEST(FeatureNormals, CurvatureOfTheHoleWallIsOneOverItsRadius) {
     for (Index v = 0; v < shape.mesh.vertex_count(); ++v) {
         if (fit.normal[v].isZero(0.0)) continue;
         const Eigen::Matrix3d frame = tangent_frame(fit.normal[v]);
-        const bool fitted = fit.field[v].n0 == fit.normal[v];  // the fit placed the normal
+        const bool fitted = fit.field(v).n0 == fit.normal[v];  // the fit placed the normal
         const Eigen::Vector3d k =
             fitted ? quadric_from_normal_slope(shape.mesh.positions[v], fit.normal[v],
-                                               fit.field[v].gradient)
+                                               fit.field(v).gradient)
                          .curvature
                    : Eigen::Vector3d::Zero();
         if (shape.surface_ids[v] != kWall) {

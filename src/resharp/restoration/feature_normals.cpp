@@ -265,7 +265,16 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
     }
     FeatureNormals result{std::vector<Vec3>(mesh.vertex_count(), Vec3::Zero()),
                           std::vector<float>(mesh.vertex_count(), 0.0f),
-                          std::vector<NormalField>(mesh.vertex_count(), NormalField{})};
+                          {},
+                          std::vector<Index>(mesh.vertex_count(), kNoIndex)};
+    if (options.estimate == NormalEstimate::LinearFit) {
+        for (Index v = 0; v < mesh.vertex_count(); ++v) {
+            if (needed[v] && vertex_patch[v] != kNoIndex) {
+                result.field_slot[v] = static_cast<Index>(result.fields.size());
+                result.fields.emplace_back();
+            }
+        }
+    }
     tbb::parallel_for(
         tbb::blocked_range<Index>(0, static_cast<Index>(mesh.vertex_count()), 4096),
         [&](const auto& range) {
@@ -280,7 +289,8 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
                 }
                 if (options.estimate == NormalEstimate::LinearFit && !n.isZero(0.0)) {
                     refine_by_fit(mesh, connectivity, face_normals, face_patch, vertex_patch, v,
-                                  fit, n, result.fit_correction_deg[v], result.field[v], scratch);
+                                  fit, n, result.fit_correction_deg[v],
+                                  result.fields[result.field_slot[v]], scratch);
                 }
                 result.normal[v] = n;
             }

@@ -50,11 +50,20 @@ struct FeatureNormals {
     /// a few degrees on curved features. The split keeps that much margin when it checks that
     /// pieces face the way of their surface.
     std::vector<float> fit_correction_deg;
-    /// Per vertex (#V, or empty): the feature's normal field about the vertex as the linear fit
-    /// found it (NormalEstimate::LinearFit; zero where there was none, as on planes), also where
-    /// the fit was not trusted to replace eq. 5.1's normal. drop_smooth_crossings() carries it
-    /// across a band.
-    std::vector<NormalField> field;
+    /// The feature's normal field about each band vertex as the linear fit found it
+    /// (NormalEstimate::LinearFit; zero where there was none, as on planes), also where the fit
+    /// was not trusted to replace eq. 5.1's normal. drop_smooth_crossings() carries it across a
+    /// band. Kept for band vertices only, a tenth of the vertices or fewer: 96 bytes each would
+    /// cost 48 bytes per triangle for all of them, a sixth of the memory budget.
+    std::vector<NormalField> fields;
+    /// Per vertex (#V, or empty): v's entry in `fields`, kNoIndex for a vertex off the bands.
+    std::vector<Index> field_slot;
+
+    /// v's field, or a zero one (no field) when it has none.
+    const NormalField& field(Index v) const {
+        static const NormalField kNone;
+        return field_slot.empty() || field_slot[v] == kNoIndex ? kNone : fields[field_slot[v]];
+    }
 };
 
 /// Per vertex (#V): at each vertex of an edge or corner triangle, N = sum(theta_i N_i) /

@@ -97,15 +97,14 @@ private:
     /// normal, so its slope shapes the surface too); fields kept only to tell smooth from sharp
     /// (drop_smooth_crossings) and planes, whose field is zero, give the tangent plane.
     bool flat(Index v) const {
-        return features_.field.size() != features_.normal.size() ||
-               features_.field[v].n0 != features_.normal[v] ||
-               features_.field[v].gradient.isZero(0.0);
+        const NormalField& field = features_.field(v);
+        return field.n0 != features_.normal[v] || field.gradient.isZero(0.0);
     }
 
     LocalQuadric surface(Index v) const {
         const Vec3& n = features_.normal[v];
         if (flat(v)) return {mesh_.positions[v], tangent_frame(n), Eigen::Vector3d::Zero()};
-        return quadric_from_normal_slope(mesh_.positions[v], n, features_.field[v].gradient);
+        return quadric_from_normal_slope(mesh_.positions[v], n, features_.field(v).gradient);
     }
 
     /// Lengths in units of the band's edges: converged to 1e-9 of them; a step at most half one.
