@@ -102,9 +102,9 @@ private:
     }
 
     LocalQuadric surface(Index v) const {
-        const Vec3& n = features_.normal[v];
-        if (flat(v)) return {mesh_.positions[v], tangent_frame(n), Eigen::Vector3d::Zero()};
-        return quadric_from_normal_slope(mesh_.positions[v], n, features_.field(v).gradient);
+        const Eigen::Matrix3d slope =
+            flat(v) ? Eigen::Matrix3d::Zero() : features_.field(v).gradient;
+        return quadric_from_normal_slope(mesh_.positions[v], features_.normal[v], slope);
     }
 
     /// Lengths in units of the band's edges: converged to 1e-9 of them; a step at most half one.
