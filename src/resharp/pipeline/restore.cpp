@@ -207,6 +207,10 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
     // Bound: max_harm_rounds; and every round that does not end the loop withdraws at least one
     // point (harmful faces are split faces, which hold points).
     for (int round = 0; round < options.max_harm_rounds; ++round) {
+        // The last round's split goes before this round's guard allocates: the guard reads the
+        // last round's slots (`checked`), never its split, so one split at most is alive while
+        // the guard runs (peak memory).
+        r.output = {};
         GuardedPoints guarded;
         clock.run(Stage::Guard, [&] {
             // Nothing is withdrawn before the first check: no flags to read. Later rounds guard
@@ -222,10 +226,8 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
         r.guard.refused_by_quality += guarded.report.refused_by_quality;
         r.guard.refused_by_guard += guarded.report.refused_by_guard;
         r.guard.repairs += guarded.report.repairs;
-        clock.run(Stage::Split, [&] {
-            r.output = {};  // the last round's split goes first: one alive at a time
-            r.output = split_faces(input.mesh, r.points.points, guarded.accepted);
-        });
+        clock.run(Stage::Split,
+                  [&] { r.output = split_faces(input.mesh, r.points.points, guarded.accepted); });
         HarmReport harm;
         clock.run(Stage::HarmCheck, [&] {
             // After the first round only the faces near those whose pieces changed are judged
