@@ -203,7 +203,7 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
     std::vector<std::uint8_t> withdrawn(r.points.points.size(), 0);
     std::vector<std::uint8_t> withdrawn_before;  // the flags of the last round's guard
     std::vector<Index> harmful;                  // the faces the last check found harmful
-    GuardedPoints checked;                       // the last round's guard, its split checked
+    GuardedPoints checked;                       // the last guard's result, its split checked
     // Bound: max_harm_rounds; and every round that does not end the loop withdraws at least one
     // point (harmful faces are split faces, which hold points).
     for (int round = 0; round < options.max_harm_rounds; ++round) {
@@ -226,21 +226,23 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
         r.guard.refused_by_quality += guarded.report.refused_by_quality;
         r.guard.refused_by_guard += guarded.report.refused_by_guard;
         r.guard.repairs += guarded.report.repairs;
+        // After the first round only the faces near those whose pieces changed are judged again
+        // (check_harm()): the faces the last check found harmful lost their points. Once that is
+        // known, the last round's slots go before the split allocates (peak memory).
+        std::vector<std::uint8_t> changed;
+        clock.run(Stage::HarmCheck, [&] {
+            if (round > 0) changed = changed_faces(checked.accepted, guarded.accepted);
+        });
+        checked = std::move(guarded);
         clock.run(Stage::Split,
-                  [&] { r.output = split_faces(input.mesh, r.points.points, guarded.accepted); });
+                  [&] { r.output = split_faces(input.mesh, r.points.points, checked.accepted); });
         HarmReport harm;
         clock.run(Stage::HarmCheck, [&] {
-            // After the first round only the faces near those whose pieces changed are judged
-            // again (check_harm()): the faces the last check found harmful lost their points.
-            const std::vector<std::uint8_t> changed =
-                round == 0 ? std::vector<std::uint8_t>{}
-                           : changed_faces(checked.accepted, guarded.accepted);
             harm = check_harm(input, r.output, options.harm, changed);
             RESHARP_EXPENSIVE_ASSERT(changed.empty() ||
                                      harm.harmful_faces ==
                                          check_harm(input, r.output, options.harm).harmful_faces);
         });
-        checked = std::move(guarded);
         ++r.rounds;
         if (round == 0) r.first_harm = harm;
         if (harm.is_harmless()) {
