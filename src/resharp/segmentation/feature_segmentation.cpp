@@ -86,6 +86,31 @@ Index ring_patch_if_single(const Connectivity& c, const std::vector<Index>& face
     return first;
 }
 
+/// Per vertex (#V): ring_patch_if_single() over face_patch. Taken once for the loops that read
+/// the same ids.
+std::vector<Index> single_ring_patches(const Connectivity& c, const std::vector<Index>& face_patch,
+                                       std::size_t vertex_count) {
+    std::vector<Index> single(vertex_count);
+    for (Index v = 0; v < vertex_count; ++v) single[v] = ring_patch_if_single(c, face_patch, v);
+    return single;
+}
+
+/// single_ring_patches() of face_patch, given those (`before`) of ids that face_patch maps to one
+/// id each, keeping kNoIndex (merged and renumbered). A ring of one id before has one after,
+/// that of any of its faces; only the mixed rings are looked at again.
+std::vector<Index> carry_single_patches(const Connectivity& c, const std::vector<Index>& face_patch,
+                                        std::vector<Index> before) {
+    for (Index v = 0; v < before.size(); ++v) {
+        Index& single = before[v];
+        if (single == kMixedRing) {
+            single = ring_patch_if_single(c, face_patch, v);
+        } else if (single != kNoIndex) {
+            single = face_patch[c.faces_around(v)[0]];
+        }
+    }
+    return before;
+}
+
 struct PatchCensus {
     std::vector<std::size_t> faces, vertices, interior_vertices, edge_vertices;
 };
@@ -272,15 +297,16 @@ std::size_t unite_smooth_borders(const std::vector<Border>& borders, double shar
 /// Greedy merging of over-segmented patches (§4, Fig. 5): every vertex shared by two patches
 /// votes the angle between the two patches' normals there (as its cosine); pairs are merged in
 /// order of increasing median angle while it stays below the merge angle, keeping patches with
-/// a sharp border apart if asked (unite_smooth_borders).
+/// a sharp border apart if asked (unite_smooth_borders). `single`: single_ring_patches() of
+/// face_patch as given.
 std::size_t merge_patches(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>& normals,
                           double merge_angle_deg, bool keep_apart, std::vector<Index>& face_patch,
-                          std::size_t patch_count) {
+                          const std::vector<Index>& single, std::size_t patch_count) {
     std::vector<std::tuple<Index, Index, double>> votes;  // (a, b, -cosine): ascending = angle
     std::vector<Index> patches;
     std::vector<Vec3> patch_normals;
     for (Index v = 0; v < mesh.vertex_count(); ++v) {
-        if (ring_patch_if_single(c, face_patch, v) != kMixedRing) continue;  // no border here
+        if (single[v] != kMixedRing) continue;  // no border here
         ring_patches(c, face_patch, v, patches);
         std::sort(patches.begin(), patches.end());
         patch_normals.clear();
@@ -328,14 +354,15 @@ std::size_t compact_ids(std::vector<Index>& face_patch, std::size_t id_bound) {
 }
 
 /// §4 step 4: each vertex joins the patch with the most faces in its one-ring (ties: lower id).
+/// `single`: single_ring_patches() of face_patch.
 std::vector<Index> label_vertices(const Mesh& mesh, const Connectivity& c,
-                                  const std::vector<Index>& face_patch) {
+                                  const std::vector<Index>& face_patch,
+                                  const std::vector<Index>& single) {
     std::vector<Index> label(mesh.vertex_count(), kNoIndex);
     std::vector<std::pair<Index, int>> counts;
     for (Index v = 0; v < mesh.vertex_count(); ++v) {
-        const Index single = ring_patch_if_single(c, face_patch, v);
-        if (single != kMixedRing) {
-            label[v] = single;  // kNoIndex too: all faces in bands
+        if (single[v] != kMixedRing) {
+            label[v] = single[v];  // kNoIndex too: all faces in bands
             continue;
         }
         counts.clear();
@@ -403,16 +430,16 @@ void candidate_patches(const Mesh& mesh, const Connectivity& c,
 /// faces nearly parallel to one feature grow into it, and a vertex of the other feature can
 /// then count more faces of the wrong patch. Every vertex lies exactly on its surface, so the
 /// patch whose tangent planes, seen from its neighbours, pass through the vertex is the right
-/// one.
+/// one. `single`: single_ring_patches() of face_patch.
 std::vector<Index> refine_border_labels(const Mesh& mesh, const Connectivity& c,
                                         const std::vector<Vec3>& normals,
                                         const std::vector<Index>& face_patch,
+                                        const std::vector<Index>& single,
                                         const std::vector<Index>& label) {
     std::vector<Index> refined = label;
     std::vector<Index> candidates;
     for (Index v = 0; v < mesh.vertex_count(); ++v) {
-        const Index single = ring_patch_if_single(c, face_patch, v);
-        if (single != kMixedRing && single != kNoIndex) continue;  // inside one patch
+        if (single[v] != kMixedRing && single[v] != kNoIndex) continue;  // inside one patch
         candidate_patches(mesh, c, face_patch, label, v, candidates);
         if (candidates.size() < 2 && label[v] != kNoIndex) continue;  // nothing to decide
         double best = std::numeric_limits<double>::infinity();
@@ -465,12 +492,15 @@ FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& conne
     for (Index& r : region) {
         if (role[r] == PatchRole::Band) r = kNoIndex;
     }
+    // The rings of one patch, taken once: merging and renumbering keep them so.
+    std::vector<Index> single = single_ring_patches(connectivity, region, mesh.vertex_count());
     s.merges = merge_patches(mesh, connectivity, face_normals, options.merge_angle_deg,
-                             options.keep_sharp_borders_apart, region, s.grown_patches);
+                             options.keep_sharp_borders_apart, region, single, s.grown_patches);
     s.patch_count = compact_ids(region, s.grown_patches);
+    single = carry_single_patches(connectivity, region, std::move(single));
     s.face_patch = std::move(region);
-    s.vertex_patch = refine_border_labels(mesh, connectivity, face_normals, s.face_patch,
-                                          label_vertices(mesh, connectivity, s.face_patch));
+    s.vertex_patch = refine_border_labels(mesh, connectivity, face_normals, s.face_patch, single,
+                                          label_vertices(mesh, connectivity, s.face_patch, single));
     return s;
 }
 
