@@ -33,6 +33,9 @@ BandClassification classify_bands(const Mesh& mesh, const Connectivity& connecti
     std::vector<std::uint8_t> is_crossing(connectivity.twin.size(), 0);
     for (Index f = 0; f < mesh.face_count(); ++f) {
         const Triangle& t = mesh.triangles[f];
+        // A face whose vertices share one label has no edge between features: most faces.
+        const Index label = vertex_patch[t[0]];
+        if (vertex_patch[t[1]] == label && vertex_patch[t[2]] == label) continue;
         for (Index k = 0; k < 3; ++k) {
             const Index h = 3 * f + k;
             const Index twin = connectivity.twin[h];
@@ -70,11 +73,13 @@ BandClassification drop_smooth_crossings(const Mesh& mesh, const Connectivity& c
     };
     std::vector<std::uint8_t> is_crossing = bands.is_crossing;
     for (Index f = 0; f < mesh.face_count(); ++f) {
+        if (bands.face_role[f] == BandRole::None) continue;  // no crossing edge: most faces
         const Triangle& t = mesh.triangles[f];
         for (Index k = 0; k < 3; ++k) {
             const Index h = 3 * f + k;
+            if (!is_crossing[h]) continue;
             const Index twin = connectivity.twin[h];
-            if (!is_crossing[h] || twin < h) continue;  // each crossing edge once
+            if (twin < h) continue;  // each crossing edge once
             const Index u = t[k], v = t[(k + 1) % 3];
             if (normals.normal[u].isZero(0.0) || normals.normal[v].isZero(0.0)) continue;
             const Vec3 middle = 0.5 * (mesh.positions[u] + mesh.positions[v]);
