@@ -126,29 +126,40 @@ private:
     PointPlacement placement_;
 };
 
+/// The point of the crossing edge of half-edge h, if h is its lower half and both ends have
+/// feature normals (counted where not).
+void place_edge_point(const Mesh& mesh, const Connectivity& c, const BandClassification& bands,
+                      const std::vector<Vec3>& normals, const SideSurfaces& sides, Index h,
+                      SharpPoints& out) {
+    const Index twin = c.twin[h];
+    if (!bands.is_crossing[h] || twin == kNoIndex || twin < h) return;  // each edge once
+    const Index u = tail_vertex(mesh, h);
+    const Index v = head_vertex(mesh, h);
+    const Vec3& a = mesh.positions[u];
+    const Vec3& b = mesh.positions[v];
+    if (normals[u].isZero(0.0) || normals[v].isZero(0.0)) {
+        ++out.missing_normal;
+        return;
+    }
+    const std::optional<Vec3> m = edge_point(a, normals[u], b, normals[v]);
+    if (!m || !passes_flip_test(a, normals[u], b, normals[v])) {
+        ++out.refused_by_flip_test;
+        return;
+    }
+    out.slots.edge_point[h] = out.slots.edge_point[twin] = static_cast<Index>(out.points.size());
+    out.points.push_back(sides.edge_point(u, v, *m, out.first_order_fallbacks));
+    ++out.edge_points;
+}
+
+/// §5.2: the points of every crossing edge, in order of its lower half-edge; only faces with a
+/// crossing edge are looked at.
 void place_edge_points(const Mesh& mesh, const Connectivity& c, const BandClassification& bands,
                        const std::vector<Vec3>& normals, const SideSurfaces& sides,
                        SharpPoints& out) {
-    for (Index h = 0; h < bands.is_crossing.size(); ++h) {
-        const Index twin = c.twin[h];
-        if (!bands.is_crossing[h] || twin == kNoIndex || twin < h) continue;  // each edge once
-        const Index u = tail_vertex(mesh, h);
-        const Index v = head_vertex(mesh, h);
-        const Vec3& a = mesh.positions[u];
-        const Vec3& b = mesh.positions[v];
-        if (normals[u].isZero(0.0) || normals[v].isZero(0.0)) {
-            ++out.missing_normal;
-            continue;
-        }
-        const std::optional<Vec3> m = edge_point(a, normals[u], b, normals[v]);
-        if (!m || !passes_flip_test(a, normals[u], b, normals[v])) {
-            ++out.refused_by_flip_test;
-            continue;
-        }
-        out.slots.edge_point[h] = out.slots.edge_point[twin] =
-            static_cast<Index>(out.points.size());
-        out.points.push_back(sides.edge_point(u, v, *m, out.first_order_fallbacks));
-        ++out.edge_points;
+    for (Index f = 0; f < bands.face_role.size(); ++f) {
+        if (bands.face_role[f] == BandRole::None) continue;  // no crossing edge: most faces
+        for (Index h = 3 * f; h < 3 * f + 3; ++h)
+            place_edge_point(mesh, c, bands, normals, sides, h, out);
     }
 }
 
