@@ -8,6 +8,35 @@
 #include "resharp/segmentation/feature_segmentation.h"
 
 namespace resharp {
+namespace {
+
+/// The role of face f given its half-edges' crossing flags.
+BandRole role_of(const std::vector<std::uint8_t>& is_crossing, Index f) {
+    const int crossing = is_crossing[3 * f] + is_crossing[3 * f + 1] + is_crossing[3 * f + 2];
+    return crossing == 3 ? BandRole::Corner : crossing > 0 ? BandRole::Edge : BandRole::None;
+}
+
+/// Counts a face of `role` in b's totals (`add`) or takes it out of them.
+void count_role(BandRole role, bool add, BandClassification& b) {
+    if (role == BandRole::None) return;
+    std::size_t& count = role == BandRole::Corner ? b.corner_triangles : b.edge_triangles;
+    count = add ? count + 1 : count - 1;
+}
+
+/// Clears crossing edge h (and its twin) in b, with the roles and counts of its two faces.
+void drop_crossing(Index h, Index twin, BandClassification& b) {
+    b.is_crossing[h] = b.is_crossing[twin] = 0;
+    --b.crossing_edges;
+    for (Index f : {face_of(h), face_of(twin)}) {
+        const BandRole role = role_of(b.is_crossing, f);
+        if (role == b.face_role[f]) continue;  // (the second face, if both are one)
+        count_role(b.face_role[f], false, b);
+        count_role(role, true, b);
+        b.face_role[f] = role;
+    }
+}
+
+}  // namespace
 
 BandClassification classify_bands(const Mesh& mesh, const Connectivity& connectivity,
                                   const std::vector<Vec3>& face_normals,
@@ -71,25 +100,24 @@ BandClassification drop_smooth_crossings(const Mesh& mesh, const Connectivity& c
         if (field.n0.isZero(0.0)) return normals.normal[v];
         return field.n0 + field.gradient * (x - mesh.positions[v]);
     };
-    std::vector<std::uint8_t> is_crossing = bands.is_crossing;
+    // Only edges go, so only the faces of the edges that go change role.
+    BandClassification out = bands;
     for (Index f = 0; f < mesh.face_count(); ++f) {
         if (bands.face_role[f] == BandRole::None) continue;  // no crossing edge: most faces
         const Triangle& t = mesh.triangles[f];
         for (Index k = 0; k < 3; ++k) {
             const Index h = 3 * f + k;
-            if (!is_crossing[h]) continue;
+            if (!out.is_crossing[h]) continue;
             const Index twin = connectivity.twin[h];
             if (twin < h) continue;  // each crossing edge once
             const Index u = t[k], v = t[(k + 1) % 3];
             if (normals.normal[u].isZero(0.0) || normals.normal[v].isZero(0.0)) continue;
             const Vec3 middle = 0.5 * (mesh.positions[u] + mesh.positions[v]);
             const Vec3 nu = carried(u, middle), nv = carried(v, middle);
-            if (nu.dot(nv) > min_cosine * nu.norm() * nv.norm()) {
-                is_crossing[h] = is_crossing[twin] = 0;
-            }
+            if (nu.dot(nv) > min_cosine * nu.norm() * nv.norm()) drop_crossing(h, twin, out);
         }
     }
-    return classify_faces(std::move(is_crossing));
+    return out;
 }
 
 BandClassification classify_faces(std::vector<std::uint8_t> is_crossing) {
@@ -99,16 +127,10 @@ BandClassification classify_faces(std::vector<std::uint8_t> is_crossing) {
     b.face_role.assign(faces, BandRole::None);
     std::size_t crossing_halves = 0;
     for (Index f = 0; f < faces; ++f) {
-        const int crossing =
+        crossing_halves +=
             b.is_crossing[3 * f] + b.is_crossing[3 * f + 1] + b.is_crossing[3 * f + 2];
-        crossing_halves += crossing;
-        if (crossing == 3) {
-            b.face_role[f] = BandRole::Corner;
-            ++b.corner_triangles;
-        } else if (crossing > 0) {
-            b.face_role[f] = BandRole::Edge;
-            ++b.edge_triangles;
-        }
+        b.face_role[f] = role_of(b.is_crossing, f);
+        count_role(b.face_role[f], true, b);
     }
     b.crossing_edges = crossing_halves / 2;
     return b;
