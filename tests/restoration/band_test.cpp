@@ -225,5 +225,27 @@ TEST(FeatureNormals, RejectsAnglesOutsideTheHalfTurn) {
     }
 }
 
+// drop_smooth_crossings() updates only the faces of the edges it drops: its roles and counts
+// must be those a classification of its crossing flags from scratch gives, whether it drops a
+// few edges or most.
+TEST(BandClassification, DroppingSmoothCrossingsKeepsRolesAndCountsOfItsFlags) {
+    const test::SampledShape shape = test::sampled_drilled_plate();
+    const Classified c = classify(shape.mesh);
+    const FeatureNormals fit =
+        feature_normals(shape.mesh, c.connectivity, c.face_normals, c.features.face_patch,
+                        c.features.vertex_patch, c.bands);
+    for (double angle : {25.0, 100.0, 179.0}) {
+        ClassificationOptions options;
+        options.smooth_continuation_angle_deg = angle;
+        const BandClassification dropped =
+            drop_smooth_crossings(shape.mesh, c.connectivity, c.bands, fit, options);
+        const BandClassification again = classify_faces(dropped.is_crossing);
+        EXPECT_EQ(dropped.face_role, again.face_role) << angle;
+        EXPECT_EQ(dropped.crossing_edges, again.crossing_edges) << angle;
+        EXPECT_EQ(dropped.edge_triangles, again.edge_triangles) << angle;
+        EXPECT_EQ(dropped.corner_triangles, again.corner_triangles) << angle;
+        if (angle == 179.0) EXPECT_LT(dropped.crossing_edges, c.bands.crossing_edges / 2);
+    }
+}
 }  // namespace
 }  // namespace resharp

@@ -5,6 +5,8 @@
 /// h / 3. Rings are stored in CSR form (count, prefix sum, scatter) so building them allocates
 /// three arrays and nothing per element.
 
+#include <cstdint>
+#include <cstring>
 #include <span>
 #include <vector>
 
@@ -53,6 +55,28 @@ void for_each_ring_vertex(const Mesh& mesh, const Connectivity& connectivity, In
         for (Index j : mesh.triangles[f]) {
             if (j != v) visit(j);
         }
+    }
+}
+
+/// Calls visit(h) for every half-edge h without a twin (edge kind not Manifold), ascending.
+/// Almost every edge is manifold (kind 0), so eight kinds are read at a time and skipped
+/// together.
+template <class Visit>
+void for_each_halfedge_without_twin(const Connectivity& connectivity, Visit&& visit) {
+    static_assert(static_cast<unsigned>(EdgeKind::Manifold) == 0 && sizeof(EdgeKind) == 1);
+    const std::vector<EdgeKind>& kind = connectivity.edge_kind;
+    const Index count = static_cast<Index>(kind.size());
+    Index h = 0;
+    for (; h + 8 <= count; h += 8) {  // Bound: count / 8 words
+        std::uint64_t eight = 0;
+        std::memcpy(&eight, kind.data() + h, sizeof eight);
+        if (eight == 0) continue;
+        for (Index i = h; i < h + 8; ++i) {
+            if (kind[i] != EdgeKind::Manifold) visit(i);
+        }
+    }
+    for (; h < count; ++h) {
+        if (kind[h] != EdgeKind::Manifold) visit(h);
     }
 }
 

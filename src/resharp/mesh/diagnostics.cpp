@@ -79,24 +79,22 @@ std::vector<bool> find_degenerate_faces(const Mesh& mesh) {
 MeshDiagnostics diagnose(const Mesh& mesh, const Connectivity& c) {
     MeshDiagnostics d;
     std::vector<Index> inconsistent, nonmanifold;
-    for (std::size_t h = 0; h < c.edge_kind.size(); ++h) {
-        const Index hi = static_cast<Index>(h);
-        if (c.edge_kind[h] == EdgeKind::Manifold) continue;  // almost all: no lookup needed
-        if (tail_vertex(mesh, hi) == head_vertex(mesh, hi)) continue;  // degenerate face's edge
+    for_each_halfedge_without_twin(c, [&](Index h) {
+        if (tail_vertex(mesh, h) == head_vertex(mesh, h)) return;  // degenerate face's edge
         switch (c.edge_kind[h]) {
             case EdgeKind::Boundary:
                 ++d.boundary_edges;
                 break;
             case EdgeKind::Inconsistent:
-                inconsistent.push_back(hi);
+                inconsistent.push_back(h);
                 break;
             case EdgeKind::NonManifold:
-                nonmanifold.push_back(hi);
+                nonmanifold.push_back(h);
                 break;
             case EdgeKind::Manifold:
                 break;
         }
-    }
+    });
     d.inconsistent_edges = distinct_edges(mesh, inconsistent);
     d.nonmanifold_edges = distinct_edges(mesh, nonmanifold);
     const DuplicateFaces duplicates = find_duplicate_faces(mesh, c);

@@ -19,19 +19,9 @@ FaceKey reversed(const FaceKey& k) { return {k[0], k[2], k[1]}; }
 
 bool has_repeated_vertex(const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[0] == t[2]; }
 
-/// The defective kinds (non-manifold, inconsistent) are the two with this bit, so one test
-/// covers a face's three edges.
-constexpr unsigned kDefectiveBit = 2;
-static_assert(static_cast<unsigned>(EdgeKind::Manifold) == 0 &&
-              static_cast<unsigned>(EdgeKind::Boundary) == 1 &&
-              static_cast<unsigned>(EdgeKind::NonManifold) == 2 &&
-              static_cast<unsigned>(EdgeKind::Inconsistent) == 3);
-
-bool has_defective_edge(const Connectivity& c, Index f) {
-    const unsigned kinds = static_cast<unsigned>(c.edge_kind[3 * f]) |
-                           static_cast<unsigned>(c.edge_kind[3 * f + 1]) |
-                           static_cast<unsigned>(c.edge_kind[3 * f + 2]);
-    return (kinds & kDefectiveBit) != 0;
+/// The kinds of edge on which duplicates lie: more than two faces, or two the same way.
+bool is_defective(EdgeKind kind) {
+    return kind == EdgeKind::NonManifold || kind == EdgeKind::Inconsistent;
 }
 
 /// Whether face f's three half-edges all have their twin in one later face: on manifold
@@ -48,12 +38,17 @@ bool starts_manifold_opposite_pair(const Connectivity& c, Index f) {
 DuplicateFaces find_duplicate_faces(const Mesh& mesh, const Connectivity& connectivity) {
     DuplicateFaces out;
     std::vector<std::pair<FaceKey, Index>> candidates;
-    for (Index f = 0; f < mesh.face_count(); ++f) {  // one pass: a clean mesh costs only this
+    for (Index f = 0; f < mesh.face_count(); ++f) {  // a clean mesh costs only this and the scan
         out.opposite_pairs += starts_manifold_opposite_pair(connectivity, f);
-        const Triangle& t = mesh.triangles[f];
-        if (has_defective_edge(connectivity, f) && !has_repeated_vertex(t))
-            candidates.emplace_back(key_of(t), f);
     }
+    Index last = kNoIndex;  // the last face taken: a face's half-edges come one after another
+    for_each_halfedge_without_twin(connectivity, [&](Index h) {
+        const Index f = face_of(h);
+        const Triangle& t = mesh.triangles[f];
+        if (f == last || !is_defective(connectivity.edge_kind[h]) || has_repeated_vertex(t)) return;
+        candidates.emplace_back(key_of(t), f);
+        last = f;
+    });
     if (candidates.empty()) return out;
     std::sort(candidates.begin(), candidates.end());
     std::vector<std::uint8_t> is_removed(mesh.face_count(), 0);
