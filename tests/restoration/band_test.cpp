@@ -34,6 +34,12 @@ Classified classify(const Mesh& mesh) {
     return c;
 }
 
+/// The feature normals of classify()'s bands, with the default options.
+FeatureNormals fitted_normals(const Mesh& mesh, const Classified& c) {
+    return feature_normals(mesh, c.connectivity, c.face_normals, c.features.face_patch,
+                           c.features.vertex_patch, c.bands);
+}
+
 TEST(BandClassification, BoxCrossingEdgesAndCornersAreTheOraclesOwn) {
     const test::SampledShape shape = test::sampled_box();
     const Classified c = classify(shape.mesh);
@@ -57,10 +63,7 @@ TEST(BandClassification, BoxCrossingEdgesAndCornersAreTheOraclesOwn) {
 TEST(FeatureNormals, BandVerticesOfABoxGetTheirFacesExactNormal) {
     const test::SampledShape shape = test::sampled_box();
     const Classified c = classify(shape.mesh);
-    const std::vector<Vec3> n =
-        feature_normals(shape.mesh, c.connectivity, c.face_normals, c.features.face_patch,
-                        c.features.vertex_patch, c.bands)
-            .normal;
+    const std::vector<Vec3> n = fitted_normals(shape.mesh, c).normal;
     std::size_t checked = 0;
     for (Index f = 0; f < shape.mesh.face_count(); ++f) {
         if (c.bands.face_role[f] == BandRole::None) continue;
@@ -158,9 +161,7 @@ FoldedSheet folded_sheet() {
 TEST(FeatureNormals, CurvatureOfTheHoleWallIsOneOverItsRadius) {
     const test::SampledShape shape = test::sampled_drilled_plate();
     const Classified c = classify(shape.mesh);
-    const FeatureNormals fit =
-        feature_normals(shape.mesh, c.connectivity, c.face_normals, c.features.face_patch,
-                        c.features.vertex_patch, c.bands);
+    const FeatureNormals fit = fitted_normals(shape.mesh, c);
     constexpr int kWall = 6;
     const double r = 3.08;
     std::size_t wall = 0, flat = 0, close = 0;
@@ -231,9 +232,7 @@ TEST(FeatureNormals, RejectsAnglesOutsideTheHalfTurn) {
 TEST(BandClassification, DroppingSmoothCrossingsKeepsRolesAndCountsOfItsFlags) {
     const test::SampledShape shape = test::sampled_drilled_plate();
     const Classified c = classify(shape.mesh);
-    const FeatureNormals fit =
-        feature_normals(shape.mesh, c.connectivity, c.face_normals, c.features.face_patch,
-                        c.features.vertex_patch, c.bands);
+    const FeatureNormals fit = fitted_normals(shape.mesh, c);
     for (double angle : {25.0, 100.0, 179.0}) {
         ClassificationOptions options;
         options.smooth_continuation_angle_deg = angle;
