@@ -23,10 +23,11 @@ void count_role(BandRole role, bool add, BandClassification& b) {
     count = add ? count + 1 : count - 1;
 }
 
-/// Clears crossing edge h (and its twin) in b, with the roles and counts of its two faces.
-void drop_crossing(Index h, Index twin, BandClassification& b) {
-    b.is_crossing[h] = b.is_crossing[twin] = 0;
-    --b.crossing_edges;
+/// Sets (`crossing`) or clears edge h (and its twin) in b, with the roles and counts of its two
+/// faces: only those change.
+void set_crossing(Index h, Index twin, bool crossing, BandClassification& b) {
+    b.is_crossing[h] = b.is_crossing[twin] = crossing ? 1 : 0;
+    b.crossing_edges = crossing ? b.crossing_edges + 1 : b.crossing_edges - 1;
     for (Index f : {face_of(h), face_of(twin)}) {
         const BandRole role = role_of(b.is_crossing, f);
         if (role == b.face_role[f]) continue;  // (the second face, if both are one)
@@ -59,7 +60,9 @@ BandClassification classify_bands(const Mesh& mesh, const Connectivity& connecti
         if (nu.isZero(0.0) || nv.isZero(0.0)) return edge_vertex;
         return edge_vertex ? nu.dot(nv) <= smooth_cosine : nu.dot(nv) < max_cosine;
     };
-    std::vector<std::uint8_t> is_crossing(connectivity.twin.size(), 0);
+    BandClassification b;
+    b.is_crossing.assign(connectivity.twin.size(), 0);
+    b.face_role.assign(mesh.face_count(), BandRole::None);
     for (Index f = 0; f < mesh.face_count(); ++f) {
         const Triangle& t = mesh.triangles[f];
         // A face whose vertices share one label has no edge between features: most faces.
@@ -79,11 +82,11 @@ BandClassification classify_bands(const Mesh& mesh, const Connectivity& connecti
             const bool confirmed = different_features && border_is_sharp(u, v);
             if (confirmed && !face_normals[f].isZero(0.0) &&
                 !face_normals[face_of(twin)].isZero(0.0)) {
-                is_crossing[h] = is_crossing[twin] = 1;
+                set_crossing(h, twin, true, b);
             }
         }
     }
-    return classify_faces(std::move(is_crossing));
+    return b;
 }
 
 BandClassification drop_smooth_crossings(const Mesh& mesh, const Connectivity& connectivity,
@@ -114,7 +117,7 @@ BandClassification drop_smooth_crossings(const Mesh& mesh, const Connectivity& c
             if (normals.normal[u].isZero(0.0) || normals.normal[v].isZero(0.0)) continue;
             const Vec3 middle = 0.5 * (mesh.positions[u] + mesh.positions[v]);
             const Vec3 nu = carried(u, middle), nv = carried(v, middle);
-            if (nu.dot(nv) > min_cosine * nu.norm() * nv.norm()) drop_crossing(h, twin, out);
+            if (nu.dot(nv) > min_cosine * nu.norm() * nv.norm()) set_crossing(h, twin, false, out);
         }
     }
     return out;
