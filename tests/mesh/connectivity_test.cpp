@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
+#include <vector>
+
 #include "support/simple_meshes.h"
 
 namespace resharp {
@@ -51,5 +54,29 @@ TEST(Connectivity, ClassifiesBoundaryNonManifoldAndInconsistentEdges) {
     EXPECT_EQ(c.twin[0], kNoIndex);
 }
 
+// for_each_halfedge_without_twin() skips eight manifold kinds at a time: it must still visit
+// exactly the half-edges without a twin, in order, within words and in the tail after the last
+// full one: a box with one face taken out (33 half-edges, 3 on the hole), the same with every
+// face reversed but one (inconsistent edges), and the closed box (none).
+TEST(Connectivity, HalfEdgesWithoutATwinAreVisitedInOrder) {
+    Mesh open = test::box_mesh();
+    open.triangles.erase(open.triangles.begin() + 5);
+    Mesh flipped = open;
+    for (std::size_t f = 1; f < flipped.triangles.size(); ++f) {
+        std::swap(flipped.triangles[f][1], flipped.triangles[f][2]);
+    }
+    std::size_t total = 0;
+    for (const Mesh& mesh : {open, flipped, test::box_mesh()}) {
+        const Connectivity c = build_connectivity(mesh);
+        std::vector<Index> expected, visited;
+        for (Index h = 0; h < c.twin.size(); ++h) {
+            if (c.twin[h] == kNoIndex) expected.push_back(h);
+        }
+        for_each_halfedge_without_twin(c, [&](Index h) { visited.push_back(h); });
+        EXPECT_EQ(visited, expected);
+        total += expected.size();
+    }
+    EXPECT_GT(total, 3u);
+}
 }  // namespace
 }  // namespace resharp
