@@ -229,10 +229,9 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
         // After the first round only the faces near those whose pieces changed are judged again
         // (check_harm()): the faces the last check found harmful lost their points. Once that is
         // known, the last round's slots go before the split allocates (peak memory).
+        // (Untimed: one pass over the faces, and no stage of its own to ask `stop` before.)
         std::vector<std::uint8_t> changed;
-        clock.run(Stage::HarmCheck, [&] {
-            if (round > 0) changed = changed_faces(checked.accepted, guarded.accepted);
-        });
+        if (round > 0) changed = changed_faces(checked.accepted, guarded.accepted);
         checked = std::move(guarded);
         clock.run(Stage::Split,
                   [&] { r.output = split_faces(input.mesh, r.points.points, checked.accepted); });
