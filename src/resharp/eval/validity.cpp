@@ -83,6 +83,10 @@ std::size_t count_flipped_faces(const Mesh& input, const Mesh& output, const Ora
         exact.size(), [&](std::size_t i) { return detail::Box3(exact.points[i], exact.points[i]); },
         mean_edge_length(input));
     const Index first_new = static_cast<Index>(input.vertex_count());
+    // An off-surface vertex carries the normal of the exact point nearest it, which beside an
+    // edge can be the other face's: a face lying on one face of a 90 degree edge would meet it
+    // at a dot product of 0 (docs/robustness.md). Such meshes judge every face where it lies.
+    const bool off_surface = !oracle.surface_points.empty();
     std::size_t flipped = 0;
     for (const Triangle& t : output.triangles) {
         if (scope == FlipScope::ChangedFaces && input_faces.count(sorted(t))) continue;
@@ -92,7 +96,7 @@ std::size_t count_flipped_faces(const Mesh& input, const Mesh& output, const Ora
         if (n.squaredNorm() == 0.0) continue;
         bool is_flipped = false, has_input_vertex = false;
         for (Index v : t) {
-            if (v >= first_new) continue;
+            if (v >= first_new || off_surface) continue;
             has_input_vertex = true;
             is_flipped = is_flipped || n.dot(oracle.normals[v]) <= 0.0;
         }
