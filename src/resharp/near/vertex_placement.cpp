@@ -32,6 +32,7 @@ constexpr double kCoordinateUlps = 8.0;  // the coordinate noise, in units in th
 constexpr std::size_t kSampledTriangles = 20000;  // triangles the structure tests look at
 constexpr double kWindowSpacings = 12.0;  // half-width of the pitch search's window, in spacings
 constexpr std::size_t kCandidates = 6;    // pitches tried, from the strongest peaks
+constexpr int kStarts = 6;                // refinements from pitches each side of a peak
 
 /// A coordinate value held by n vertices, with weight log2(n): a grid line holds the vertices
 /// of one slice of the surface; a large flat face, as many vertices as all the lines crossing it,
@@ -250,6 +251,18 @@ Lattice refine_lattice(const AxisValues& values, Lattice l, const Vec3& centre, 
     return l;
 }
 
+/// The weight of the values within 2 `tol` of a line of the lattice.
+double weight_on_lines(const AxisValues& values, const Lattice& l, double tol) {
+    double w = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        for (const SharedValue& s : values[a]) {
+            const double u = (s.value - l.phase[a]) / l.pitch;
+            if (std::abs(u - std::round(u)) * l.pitch <= 2.0 * tol) w += s.weight;
+        }
+    }
+    return w;
+}
+
 /// The lattices of the shared coordinate values, refined, strongest first (coarse_lattices);
 /// none if they show no common spacing.
 std::vector<Lattice> find_lattices(const AxisValues& values, double spacing, double tol) {
@@ -258,10 +271,20 @@ std::vector<Lattice> find_lattices(const AxisValues& values, double spacing, dou
     const double reach = kWindowSpacings * spacing;
     std::vector<Lattice> out;
     for (const Lattice& coarse : coarse_lattices(window(values, centre, reach), spacing)) {
-        const Lattice fine = refine_lattice(values, coarse, centre, reach, tol);
-        if (fine.pitch > 0.0 && std::abs(fine.pitch / coarse.pitch - 1.0) <= 0.05) {
-            out.push_back(fine);
+        // The peak of a small part is broad, and values off the lattice pull it aside: the
+        // refinement starts from pitches around it too (kStarts each side, 0.5 % apart) and
+        // keeps the lattice whose lines hold the most values.
+        std::optional<Lattice> best;
+        double best_weight = 0.0;
+        for (int start = -kStarts; start <= kStarts; ++start) {
+            Lattice from = coarse;
+            from.pitch *= 1.0 + 0.005 * start;
+            const Lattice fine = refine_lattice(values, from, centre, reach, tol);
+            if (!(fine.pitch > 0.0) || std::abs(fine.pitch / coarse.pitch - 1.0) > 0.05) continue;
+            const double weight = weight_on_lines(values, fine, tol);
+            if (weight > best_weight) best = fine, best_weight = weight;
         }
+        if (best) out.push_back(*best);
     }
     return out;
 }
