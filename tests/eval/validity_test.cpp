@@ -71,6 +71,10 @@ TEST(Validity, FlippedFacesOfOffSurfaceVerticesWhereTheyLie) {
                                {Vec3::UnitZ(), Vec3::UnitX()}};
     EXPECT_EQ(count_flipped_faces(input, input, on_surface, exact, FlipScope::AllFaces), 1u);
     EXPECT_EQ(count_flipped_faces(input, input, off_surface, exact, FlipScope::AllFaces), 0u);
+    // A bisection vertex, h/512 off its surface point, keeps the vertex-normal criterion.
+    Oracle barely_off = on_surface;
+    barely_off.surface_points = {Vec3(0, 0, 1e-3), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    EXPECT_EQ(count_flipped_faces(input, input, barely_off, exact, FlipScope::AllFaces), 1u);
     Mesh reversed = input;
     std::swap(reversed.triangles[0][1], reversed.triangles[0][2]);
     EXPECT_EQ(count_flipped_faces(input, reversed, off_surface, exact, FlipScope::AllFaces), 1u);
