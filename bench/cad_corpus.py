@@ -21,7 +21,7 @@ import math
 import os
 import sys
 
-from results import CAD_BEGIN, CAD_END, cad_section, git_head, load, machine, run
+from results import CAD_BEGIN, CAD_END, git_head, load, machine, run, write_section
 
 ROTATION = {"axis": [2, -1, 3], "degrees": 27}
 # Parts whose every face is a plane: the CTest subset (tests/cli) checks these are not made worse.
@@ -48,14 +48,16 @@ def solid_file(root, scratch, part, rotated):
     return out
 
 
-def measure(exe, solid, scratch, name, cells):
+def measure(exe, solid, scratch, name, cells, simulate_flags=()):
+    """One run: simulated (with `simulate_flags`, e.g. a mesher), restored, evaluated."""
     mesh = os.path.join(scratch, name + ".ply")
     oracle = os.path.join(scratch, name + "_oracle.ply")
     restored = os.path.join(scratch, name + "_restored.ply")
     report = os.path.join(scratch, name + "_report.json")
     scores = os.path.join(scratch, name + "_evaluate.json")
     grid = ["--cells", str(cells)]
-    run([exe, "simulate", "--solid", solid, "-o", mesh, "--oracle", oracle, "-q"] + grid)
+    run([exe, "simulate", "--solid", solid, "-o", mesh, "--oracle", oracle, "-q"] + grid +
+        list(simulate_flags))
     run([exe, "restore", mesh, "-o", restored, "--report", report, "-q"])
     run([exe, "evaluate", "--input", mesh, "--oracle", oracle, "--solid", solid, "--output",
          restored, "--json", scores, "-q"] + grid)
@@ -220,15 +222,6 @@ def section(raw):
     ])
 
 
-def write_section(page_path, text):
-    """Replaces the page's CAD corpus section with `text`, or appends it."""
-    page = open(page_path).read() if os.path.exists(page_path) else ""
-    old = cad_section(page)
-    page = page.replace(old, text) if old else page.rstrip("\n") + "\n\n" + text + "\n"
-    with open(page_path, "w") as f:
-        f.write(page)
-
-
 def main():
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     parts = sorted(os.path.splitext(os.path.basename(p))[0]
@@ -262,7 +255,7 @@ def main():
     if args.raw:
         with open(args.raw, "w") as f:
             json.dump(raw, f, indent=1)
-    write_section(args.output, section(raw))
+    write_section(args.output, section(raw), CAD_BEGIN, CAD_END)
     print(f"wrote the CAD corpus section of {args.output}", file=sys.stderr)
 
 

@@ -48,11 +48,42 @@ CAD_BEGIN = "<!-- cad-corpus: begin (bench/cad_corpus.py writes this section) --
 CAD_END = "<!-- cad-corpus: end -->"
 
 
+# The sections bench/mesher_results.py writes, one per mesher; kept as the CAD corpus section.
+MESHER_SECTIONS = ["surface-nets", "midpoint", "mc"]
+
+
+def mesher_markers(mesher):
+    """The begin and end markers of the page's section for `mesher`."""
+    return (f"<!-- mesher-results {mesher}: begin (bench/mesher_results.py writes this "
+            "section) -->", f"<!-- mesher-results {mesher}: end -->")
+
+
+def marked_section(page, begin, end):
+    """The section of `page` (text) from marker `begin` to marker `end`, or "" if it has none."""
+    if begin not in page or end not in page:
+        return ""
+    return begin + page.split(begin, 1)[1].split(end, 1)[0] + end
+
+
 def cad_section(page):
     """The CAD corpus section of `page` (text), or "" if it has none."""
-    if CAD_BEGIN not in page or CAD_END not in page:
-        return ""
-    return CAD_BEGIN + page.split(CAD_BEGIN, 1)[1].split(CAD_END, 1)[0] + CAD_END
+    return marked_section(page, CAD_BEGIN, CAD_END)
+
+
+def kept_sections(page):
+    """The sections other scripts write into `page`, in page order, as one text."""
+    sections = [cad_section(page)] + [marked_section(page, *mesher_markers(m))
+                                      for m in MESHER_SECTIONS]
+    return "\n\n".join(sorted((s for s in sections if s), key=page.index))
+
+
+def write_section(page_path, text, begin, end):
+    """Replaces the page's section between `begin` and `end` with `text`, or appends it."""
+    page = open(page_path).read() if os.path.exists(page_path) else ""
+    old = marked_section(page, begin, end)
+    page = page.replace(old, text) if old else page.rstrip("\n") + "\n\n" + text + "\n"
+    with open(page_path, "w") as f:
+        f.write(page)
 
 
 def run(cmd):
@@ -270,7 +301,7 @@ def main():
         causes_first=causes_table(results, first_order=True))
     if os.path.exists(args.output):
         with open(args.output) as f:
-            kept = cad_section(f.read())
+            kept = kept_sections(f.read())
         if kept:
             page = page.rstrip("\n") + "\n\n" + kept + "\n"
     with open(args.output, "w") as f:

@@ -59,5 +59,26 @@ TEST(Validity, FlippedFacesAgainstExactNormals) {
                  InvalidInput);
 }
 
+// An off-surface mesher's vertex beside a 90 degree edge carries the other face's normal (+x)
+// though its face lies on z = 0: judged where the face lies, the face is not flipped, and its
+// reversal is.
+TEST(Validity, FlippedFacesOfOffSurfaceVerticesWhereTheyLie) {
+    const Mesh input{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, {{0, 1, 2}}};
+    const Oracle on_surface{{Vec3::UnitX(), Vec3::UnitZ(), Vec3::UnitZ()}, {1, 0, 0}};
+    Oracle off_surface = on_surface;
+    off_surface.surface_points = {Vec3(0, 0, 0.1), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    const SurfaceSamples exact{{Vec3(0.3, 0.3, 0), Vec3(5, 0.3, 0.3)},
+                               {Vec3::UnitZ(), Vec3::UnitX()}};
+    EXPECT_EQ(count_flipped_faces(input, input, on_surface, exact, FlipScope::AllFaces), 1u);
+    EXPECT_EQ(count_flipped_faces(input, input, off_surface, exact, FlipScope::AllFaces), 0u);
+    // A bisection vertex, h/512 off its surface point, keeps the vertex-normal criterion.
+    Oracle barely_off = on_surface;
+    barely_off.surface_points = {Vec3(0, 0, 1e-3), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    EXPECT_EQ(count_flipped_faces(input, input, barely_off, exact, FlipScope::AllFaces), 1u);
+    Mesh reversed = input;
+    std::swap(reversed.triangles[0][1], reversed.triangles[0][2]);
+    EXPECT_EQ(count_flipped_faces(input, reversed, off_surface, exact, FlipScope::AllFaces), 1u);
+}
+
 }  // namespace
 }  // namespace resharp::eval

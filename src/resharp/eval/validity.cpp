@@ -83,6 +83,17 @@ std::size_t count_flipped_faces(const Mesh& input, const Mesh& output, const Ora
         exact.size(), [&](std::size_t i) { return detail::Box3(exact.points[i], exact.points[i]); },
         mean_edge_length(input));
     const Index first_new = static_cast<Index>(input.vertex_count());
+    // An off-surface vertex carries the normal of the exact point nearest it, which beside an
+    // edge can be the other face's: a face lying on one face of a 90 degree edge would meet it
+    // at a dot product of 0 (docs/robustness.md). A face with a vertex farther than
+    // kOffSurface mean edge lengths from its surface point (a midpoint or surface-nets vertex,
+    // not a bisection one, h/512 off) is judged where it lies.
+    constexpr double kOffSurface = 0.01;
+    const double off_distance = kOffSurface * mean_edge_length(input);
+    const auto off_surface = [&](Index v) {
+        return !oracle.surface_points.empty() &&
+               (input.positions[v] - oracle.surface_points[v]).norm() > off_distance;
+    };
     std::size_t flipped = 0;
     for (const Triangle& t : output.triangles) {
         if (scope == FlipScope::ChangedFaces && input_faces.count(sorted(t))) continue;
@@ -90,13 +101,14 @@ std::size_t count_flipped_faces(const Mesh& input, const Mesh& output, const Ora
                    &c = output.positions[t[2]];
         const Vec3 n = (b - a).cross(c - a);
         if (n.squaredNorm() == 0.0) continue;
-        bool is_flipped = false, has_input_vertex = false;
+        bool is_flipped = false, has_input_vertex = false, has_off_vertex = false;
         for (Index v : t) {
             if (v >= first_new) continue;
             has_input_vertex = true;
+            has_off_vertex = has_off_vertex || off_surface(v);
             is_flipped = is_flipped || n.dot(oracle.normals[v]) <= 0.0;
         }
-        if (!has_input_vertex && exact.size() > 0) {
+        if ((!has_input_vertex || has_off_vertex) && exact.size() > 0) {
             const Vec3 centroid = (a + b + c) / 3.0;
             const Index s =
                 exact_grid

@@ -32,7 +32,10 @@ enum class FlipScope {
 
 /// Faces turned against the surface they lie on: the face normal has a non-positive dot
 /// product with the exact normal (`oracle`) of one of its input vertices, or, for a face of new
-/// vertices only, with the normal of the exact sample nearest its centroid. Degenerate faces
+/// vertices only, with the normal of the exact sample nearest its centroid. So is a face with
+/// an input vertex farther than 1 % of the mean edge length from its oracle surface point (a
+/// midpoint or surface-nets vertex; bisection's, h/512 off, are not): an off-surface vertex
+/// beside an edge carries the other face's normal. Degenerate faces
 /// are not counted. `output` starts with `input`'s vertices; pass input as output with
 /// AllFaces to count the input's own flipped slivers.
 /// \throws InvalidInput if the output does not start with the input's vertices or the oracle

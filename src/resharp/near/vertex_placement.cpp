@@ -1,0 +1,617 @@
+#include "resharp/near/vertex_placement.h"
+
+#include <algorithm>
+#include <array>
+#include <cfloat>
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <span>
+#include <sstream>
+#include <vector>
+
+#include "resharp/core/errors.h"
+
+namespace resharp {
+namespace {
+
+// The shares that decide. A grid-edge mesher (mc, bisection, midpoint) puts every vertex on a
+// grid edge. A surface-nets mesh fits a grid on its flat axis-aligned faces too (vertices at cell
+// centres, on the lines of the grid shifted by h/2; where such faces lie on grid planes, at the
+// midpoints of that shifted grid's edges): only its band vertices are off those edges, 0.2 % of
+// them on a plane-only part at 60 cells. Hence a share this close to 1; a grid-edge mesh with
+// more stray vertices than this takes the exact path, the safe one.
+constexpr double kOnEdgeShare = 0.9999;
+constexpr double kMidpointShare = 0.9;  // of the vertices on grid edges, at their edge's middle
+constexpr double kDualShare = 0.9;      // triangles on the four cells around one grid edge
+/// A lattice's strength (the mean resultant of its values' phases) below which the shared
+/// coordinate values show no common spacing.
+constexpr double kMinStrength = 0.25;
+constexpr std::size_t kMinShared = 3;    // vertices sharing a coordinate value: a candidate line
+constexpr double kCoordinateUlps = 8.0;  // the coordinate noise, in units in the last place
+constexpr std::size_t kSampledTriangles = 20000;  // triangles the structure tests look at
+constexpr double kWindowSpacings = 12.0;  // half-width of the pitch search's window, in spacings
+constexpr std::size_t kCandidates = 6;    // pitches tried, from the strongest peaks
+constexpr int kStarts = 6;                // refinements from pitches each side of a peak
+
+/// A coordinate value held by n vertices, with weight log2(n): a grid line holds the vertices
+/// of one slice of the surface; a large flat face, as many vertices as all the lines crossing it,
+/// at one value off the grid; weighed by count it would outweigh them.
+struct SharedValue {
+    double value = 0.0;
+    double weight = 0.0;
+};
+using AxisValues = std::array<std::vector<SharedValue>, 3>;
+
+/// Lines at phase[a] + k * pitch on axis a.
+struct Lattice {
+    double pitch = 0.0;
+    Vec3 phase = Vec3::Zero();
+};
+
+/// The coordinate noise of the mesh, kCoordinateUlps units in the last place of its largest
+/// coordinate: of double, and of float when every coordinate is a float (as in an STL file;
+/// exact multiples of a power of two, as on a dyadic grid, are floats too), else none.
+std::pair<double, std::optional<double>> coordinate_tolerances(const Mesh& mesh) {
+    double largest = 0.0;
+    bool all_float = true;
+    for (const Vec3& p : mesh.positions) {
+        for (int a = 0; a < 3; ++a) {
+            largest = std::max(largest, std::abs(p[a]));
+            all_float = all_float && static_cast<double>(static_cast<float>(p[a])) == p[a];
+        }
+    }
+    const double ulps = kCoordinateUlps * std::max(largest, 1.0e-300);
+    return {ulps * DBL_EPSILON, all_float ? std::optional(ulps * FLT_EPSILON) : std::nullopt};
+}
+
+/// Per axis, the coordinate values at least kMinShared vertices hold (within `tol`), sorted.
+AxisValues shared_values(const Mesh& mesh, double tol) {
+    AxisValues out;
+    std::vector<double> xs(mesh.vertex_count());
+    for (int a = 0; a < 3; ++a) {
+        for (std::size_t v = 0; v < xs.size(); ++v) xs[v] = mesh.positions[v][a];
+        std::sort(xs.begin(), xs.end());
+        for (std::size_t i = 0; i < xs.size();) {
+            std::size_t j = i + 1;
+            while (j < xs.size() && xs[j] - xs[i] <= 2.0 * tol) ++j;
+            if (j - i >= kMinShared) {
+                out[a].push_back({xs[(i + j) / 2], std::log2(static_cast<double>(j - i))});
+            }
+            i = j;
+        }
+    }
+    return out;
+}
+
+/// The median length of the edges of (at most kSampledTriangles evenly spread) triangles.
+double median_edge_length(const Mesh& mesh) {
+    const std::size_t stride = std::max<std::size_t>(1, mesh.face_count() / kSampledTriangles);
+    std::vector<double> lengths;
+    for (std::size_t f = 0; f < mesh.face_count(); f += stride) {
+        const Triangle& t = mesh.triangles[f];
+        for (int k = 0; k < 3; ++k) {
+            lengths.push_back((mesh.positions[t[k]] - mesh.positions[t[(k + 1) % 3]]).norm());
+        }
+    }
+    if (lengths.empty()) return 0.0;
+    auto middle = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
+    std::nth_element(lengths.begin(), middle, lengths.end());
+    return *middle;
+}
+
+/// Sum of weight * e^(2 pi i value / pitch): its length over the total weight is 1 when every
+/// value lies on one lattice of this pitch, and its angle gives the lattice's phase.
+std::complex<double> phasor(std::span<const SharedValue> values, double pitch) {
+    std::complex<double> sum = 0.0;
+    for (const SharedValue& s : values) {
+        sum += s.weight * std::polar(1.0, 2.0 * std::numbers::pi * s.value / pitch);
+    }
+    return sum;
+}
+
+double total_weight(const AxisValues& values) {
+    double w = 0.0;
+    for (const auto& axis : values) {
+        for (const SharedValue& s : axis) w += s.weight;
+    }
+    return w;
+}
+
+/// How well one lattice per axis, all of `pitch`, holds the values: 0..1.
+double strength(const AxisValues& values, double pitch) {
+    const double w = total_weight(values);
+    if (w <= 0.0) return 0.0;
+    double sum = 0.0;
+    for (const auto& axis : values) sum += std::abs(phasor(axis, pitch));
+    return sum / w;
+}
+
+/// Per axis, the weighted median value.
+Vec3 median_values(const AxisValues& values) {
+    Vec3 centre = Vec3::Zero();
+    for (int a = 0; a < 3; ++a) {
+        double half = 0.0, w = 0.0;
+        for (const SharedValue& s : values[a]) half += 0.5 * s.weight;
+        for (const SharedValue& s : values[a]) {
+            w += s.weight;
+            centre[a] = s.value;
+            if (w >= half) break;
+        }
+    }
+    return centre;
+}
+
+/// The values within `reach` of centre on each axis.
+AxisValues window(const AxisValues& values, const Vec3& centre, double reach) {
+    AxisValues out;
+    for (int a = 0; a < 3; ++a) {
+        for (const SharedValue& s : values[a]) {
+            if (std::abs(s.value - centre[a]) <= reach) out[a].push_back(s);
+        }
+    }
+    return out;
+}
+
+/// First lattices: the pitches in [spacing / 3, 3 spacing] at which the values near the centre
+/// (a window, so that the search steps can be coarse) peak, at most kCandidates of them. A
+/// lattice of pitch h also holds at h/2, h/3, ..., as strongly: the peaks nearly as strong as
+/// the strongest come first, coarsest first, then the others by strength.
+std::vector<Lattice> coarse_lattices(const AxisValues& near, double spacing) {
+    constexpr double kReach = 2.0 * kWindowSpacings;  // the window's width, in spacings
+    const int steps = static_cast<int>(std::log(9.0) * 20.0 * kReach);
+    const double factor = std::pow(9.0, 1.0 / steps);
+    std::vector<double> pitches(steps + 1), strengths(steps + 1);
+    for (int i = 0; i <= steps; ++i) {
+        pitches[i] = spacing / 3.0 * std::pow(factor, i);
+        strengths[i] = strength(near, pitches[i]);
+    }
+    std::vector<std::pair<double, double>> peaks;  // (strength, pitch)
+    for (int i = 1; i < steps; ++i) {
+        if (strengths[i] >= strengths[i - 1] && strengths[i] > strengths[i + 1] &&
+            strengths[i] >= kMinStrength) {
+            peaks.emplace_back(strengths[i], pitches[i]);
+        }
+    }
+    std::sort(peaks.rbegin(), peaks.rend());
+    if (peaks.size() > kCandidates) peaks.resize(kCandidates);
+    const double strongest = peaks.empty() ? 0.0 : peaks.front().first;
+    std::stable_sort(peaks.begin(), peaks.end(), [&](const auto& x, const auto& y) {
+        const bool x_strong = x.first >= 0.8 * strongest, y_strong = y.first >= 0.8 * strongest;
+        if (x_strong != y_strong) return x_strong;
+        return x_strong && x.second > y.second;
+    });
+    std::vector<Lattice> out;
+    for (const auto& [unused, pitch] : peaks) {
+        Lattice l{pitch, Vec3::Zero()};
+        for (int a = 0; a < 3; ++a) {
+            l.phase[a] = std::arg(phasor(near[a], pitch)) / (2.0 * std::numbers::pi) * pitch;
+        }
+        out.push_back(l);
+    }
+    return out;
+}
+
+/// One least-squares pass: values within `reach` of the centre and within `band` of a line of
+/// `l` give the line number k; fits value = phase[a] + k * pitch (one pitch, a phase per axis).
+Lattice fit_lattice(const AxisValues& values, const Lattice& l, const Vec3& centre, double reach,
+                    double band) {
+    std::array<double, 3> sw{}, sk{}, sd{}, skk{}, skd{};
+    Vec3 anchor;
+    for (int a = 0; a < 3; ++a) {
+        anchor[a] = l.phase[a] + std::round((centre[a] - l.phase[a]) / l.pitch) * l.pitch;
+        for (const SharedValue& s : values[a]) {
+            if (std::abs(s.value - centre[a]) > reach) continue;
+            const double d = s.value - anchor[a];  // relative to the anchor: no cancellation
+            const double k = std::round(d / l.pitch);
+            if (std::abs(d - k * l.pitch) > band) continue;
+            sw[a] += s.weight, sk[a] += s.weight * k, sd[a] += s.weight * d;
+            skk[a] += s.weight * k * k, skd[a] += s.weight * k * d;
+        }
+    }
+    double num = 0.0, den = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        if (sw[a] <= 0.0) continue;
+        num += skd[a] - sk[a] * sd[a] / sw[a];
+        den += skk[a] - sk[a] * sk[a] / sw[a];
+    }
+    Lattice out = l;
+    if (den > 0.0) out.pitch = num / den;  // else every axis has one line: keep the pitch
+    for (int a = 0; a < 3; ++a) {
+        out.phase[a] = sw[a] > 0.0 ? anchor[a] + (sd[a] - out.pitch * sk[a]) / sw[a] : l.phase[a];
+    }
+    return out;
+}
+
+/// The lattice refined over all values: the window doubles while the band around the lines stays
+/// wide (the line numbers stay right while the pitch error times the lines in reach is well
+/// below the band), then the band narrows to the coordinate noise, dropping values off the lines
+/// (a flat face's height). Bounded: the reach doubles at most 64 times from the first window to
+/// the values' extent, the band quarters at most 64 times down to the noise.
+Lattice refine_lattice(const AxisValues& values, Lattice l, const Vec3& centre, double reach,
+                       double tol) {
+    double extent = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        for (const SharedValue& s : values[a]) {
+            extent = std::max(extent, std::abs(s.value - centre[a]));
+        }
+    }
+    double band = 0.05 * l.pitch;
+    for (int pass = 0; pass < 128; ++pass) {
+        l = fit_lattice(values, l, centre, reach, std::max(band, 2.0 * tol));
+        if (!(l.pitch > 0.0) || !std::isfinite(l.pitch)) break;
+        if (reach < extent) {
+            reach *= 2.0;
+        } else if (band > 2.0 * tol) {
+            band *= 0.25;
+        } else {
+            break;
+        }
+    }
+    return l;
+}
+
+/// The weight of the values within 2 `tol` of a line of the lattice.
+double weight_on_lines(const AxisValues& values, const Lattice& l, double tol) {
+    double w = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        for (const SharedValue& s : values[a]) {
+            const double u = (s.value - l.phase[a]) / l.pitch;
+            if (std::abs(u - std::round(u)) * l.pitch <= 2.0 * tol) w += s.weight;
+        }
+    }
+    return w;
+}
+
+/// The lattices of the shared coordinate values, refined, strongest first (coarse_lattices);
+/// none if they show no common spacing.
+std::vector<Lattice> find_lattices(const AxisValues& values, double spacing, double tol) {
+    if (total_weight(values) <= 0.0 || !(spacing > 0.0)) return {};
+    const Vec3 centre = median_values(values);
+    const double reach = kWindowSpacings * spacing;
+    std::vector<Lattice> out;
+    for (const Lattice& coarse : coarse_lattices(window(values, centre, reach), spacing)) {
+        // The peak of a small part is broad, and values off the lattice pull it aside: the
+        // refinement starts from pitches around it too (kStarts each side, 0.5 % apart) and
+        // keeps the lattice whose lines hold the most values.
+        std::optional<Lattice> best;
+        double best_weight = 0.0;
+        for (int start = -kStarts; start <= kStarts; ++start) {
+            Lattice from = coarse;
+            from.pitch *= 1.0 + 0.005 * start;
+            const Lattice fine = refine_lattice(values, from, centre, reach, tol);
+            if (!(fine.pitch > 0.0) || std::abs(fine.pitch / coarse.pitch - 1.0) > 0.05) continue;
+            const double weight = weight_on_lines(values, fine, tol);
+            if (weight > best_weight) best = fine, best_weight = weight;
+        }
+        if (best) out.push_back(*best);
+    }
+    return out;
+}
+
+/// Signed offset of x from the nearest grid line, in pitches: (-0.5, 0.5].
+double line_offset(double x, double origin, double pitch) {
+    const double u = (x - origin) / pitch;
+    return u - std::round(u);
+}
+
+/// How the vertices sit on the edges of `grid` (shares of #V; midpoint of those on edges).
+struct EdgeStats {
+    double on_edge = 0.0;   ///< two or three coordinates on lines
+    double on_node = 0.0;   ///< three
+    double midpoint = 0.0;  ///< of those on edges, two on lines and the third at the middle
+};
+
+EdgeStats edge_stats(const Mesh& mesh, const Grid& grid, double tol) {
+    const double within = 2.0 * tol / grid.pitch;  // in pitches
+    std::size_t on_edge = 0, on_node = 0, midpoint = 0;
+    for (const Vec3& p : mesh.positions) {
+        int on_lines = 0, free_axis = 0;
+        for (int a = 0; a < 3; ++a) {
+            if (std::abs(line_offset(p[a], grid.origin[a], grid.pitch)) <= within) {
+                ++on_lines;
+            } else {
+                free_axis = a;
+            }
+        }
+        if (on_lines < 2) continue;
+        ++on_edge;
+        if (on_lines == 3) {
+            ++on_node;
+        } else if (std::abs(
+                       std::abs(line_offset(p[free_axis], grid.origin[free_axis], grid.pitch)) -
+                       0.5) <= within) {
+            ++midpoint;
+        }
+    }
+    const double n = static_cast<double>(mesh.vertex_count());
+    return {static_cast<double>(on_edge) / n, static_cast<double>(on_node) / n,
+            on_edge > 0 ? static_cast<double>(midpoint) / static_cast<double>(on_edge) : 0.0};
+}
+
+/// The coarsest grid whose edges still hold nearly every vertex, from `fine` (which must): a
+/// lattice of pitch h also fits at h/2 (where flat faces happen to lie on the half lines, or a
+/// midpoint mesh's vertices are all on the nodes of the half grid). Each doubling keeps the
+/// every-other lines of each axis that hold the most vertices; at most 8 doublings.
+Grid coarsest_edge_grid(const Mesh& mesh, Grid fine, double tol) {
+    for (int doubling = 0; doubling < 8; ++doubling) {
+        std::optional<Grid> best;
+        double best_share = kOnEdgeShare;
+        for (int parity = 0; parity < 8; ++parity) {
+            Grid g{2.0 * fine.pitch, fine.origin};
+            for (int a = 0; a < 3; ++a) {
+                if ((parity >> a) & 1) g.origin[a] += fine.pitch;
+            }
+            const double share = edge_stats(mesh, g, tol).on_edge;
+            if (share >= best_share) best = g, best_share = share;
+        }
+        if (!best) break;
+        fine = *best;
+    }
+    return fine;
+}
+
+/// True when three cells are distinct, at most one apart along every axis and equal along one:
+/// three of the four cells around one grid edge.
+bool around_one_edge(const std::array<std::array<double, 3>, 3>& cell) {
+    if (cell[0] == cell[1] || cell[1] == cell[2] || cell[0] == cell[2]) return false;
+    bool adjacent = true, one_slab = false;
+    for (int a = 0; a < 3; ++a) {
+        const double lo = std::min({cell[0][a], cell[1][a], cell[2][a]});
+        const double hi = std::max({cell[0][a], cell[1][a], cell[2][a]});
+        adjacent = adjacent && hi - lo <= 1.0;
+        one_slab = one_slab || hi == lo;
+    }
+    return adjacent && one_slab;
+}
+
+/// The share of (at most `samples` evenly spread) triangles whose vertices lie in three of the
+/// four cells of `grid` around one grid edge, as every triangle of a surface-nets mesh does
+/// (half of the quad dual to a crossed edge). A coordinate on a grid line (within `tol`: a mean
+/// of crossings all on one face of its cell, as on a flat face lying on a grid plane) may be in
+/// the cell on either side; the triangle counts if one choice fits (at most 2^9 choices).
+double dual_share(const Mesh& mesh, const Grid& grid, double tol, std::size_t samples) {
+    const std::size_t stride = std::max<std::size_t>(1, mesh.face_count() / samples);
+    const double within = 2.0 * tol / grid.pitch;
+    std::size_t tested = 0, dual = 0;
+    for (std::size_t f = 0; f < mesh.face_count(); f += stride) {
+        std::array<std::array<double, 3>, 3> cell;
+        int on_line = 0;  // bit 3k + a: coordinate a of vertex k lies on a line
+        for (int k = 0; k < 3; ++k) {
+            const Vec3& p = mesh.positions[mesh.triangles[f][k]];
+            for (int a = 0; a < 3; ++a) {
+                const double u = (p[a] - grid.origin[a]) / grid.pitch;
+                const bool on = std::abs(u - std::round(u)) <= within;
+                cell[k][a] = on ? std::round(u) : std::floor(u);
+                on_line |= on ? 1 << (3 * k + a) : 0;
+            }
+        }
+        ++tested;
+        // Each subset of the on-line coordinates moved to the cell below.
+        for (int below = on_line;; below = (below - 1) & on_line) {
+            std::array<std::array<double, 3>, 3> choice = cell;
+            for (int bit = 0; bit < 9; ++bit) {
+                if ((below >> bit) & 1) choice[bit / 3][bit % 3] -= 1.0;
+            }
+            if (around_one_edge(choice)) {
+                ++dual;
+                break;
+            }
+            if (below == 0) break;
+        }
+    }
+    return tested > 0 ? static_cast<double>(dual) / static_cast<double>(tested) : 0.0;
+}
+
+std::string describe(const Grid& g) {
+    std::ostringstream s;
+    s.precision(9);
+    s << "pitch " << g.pitch << ", origin (" << g.origin.x() << ", " << g.origin.y() << ", "
+      << g.origin.z() << ")";
+    return s.str();
+}
+
+std::string percent(double share) {
+    std::ostringstream s;
+    s.precision(3);
+    s << 100.0 * share << " %";
+    return s.str();
+}
+
+/// The estimate on a known grid: on its edges (midpoint or exact), dual to it (near), or exact.
+PlacementEstimate classify_on(const Mesh& mesh, const Grid& grid, double tol,
+                              const std::string& source) {
+    PlacementEstimate e;
+    e.grid = grid;
+    e.pitch = grid.pitch;
+    const EdgeStats s = edge_stats(mesh, grid, tol);
+    e.on_grid_edge_share = s.on_edge;
+    e.midpoint_share = s.midpoint;
+    const std::string where = source + " (" + describe(grid) + "): ";
+    if (s.on_edge >= kOnEdgeShare) {
+        e.placement =
+            s.midpoint >= kMidpointShare ? VertexPlacement::Midpoint : VertexPlacement::Exact;
+        e.reason = where + percent(s.on_edge) + " of the vertices on grid edges, " +
+                   percent(s.midpoint) + " of those at the middle: " +
+                   (e.placement == VertexPlacement::Midpoint
+                        ? "midpoint"
+                        : "exact (crossings or bisection along the edges)");
+        return e;
+    }
+    e.dual_triangle_share = dual_share(mesh, grid, tol, kSampledTriangles);
+    e.placement =
+        e.dual_triangle_share >= kDualShare ? VertexPlacement::Near : VertexPlacement::Exact;
+    e.reason = where + percent(s.on_edge) + " of the vertices on grid edges, " +
+               percent(e.dual_triangle_share) + " of the triangles on the cells around one edge: " +
+               (e.placement == VertexPlacement::Near ? "near (cell means)" : "cannot tell, exact");
+    return e;
+}
+
+/// The grids a mesh may have been built on, given a lattice of its shared coordinates: a line
+/// value may be a grid line or lie halfway between two (a surface-nets vertex at a cell centre
+/// where its face is flat and axis-aligned; a midpoint vertex), on each axis; and the lattice
+/// may show half the pitch. The eight half-pitch shifts of the lattice's pitch and of twice it.
+constexpr std::size_t kShifts = 16;  // shifted_grids() per lattice
+
+std::vector<Grid> shifted_grids(const Lattice& l) {
+    std::vector<Grid> out;
+    for (double pitch : {l.pitch, 2.0 * l.pitch}) {
+        for (int shift = 0; shift < 8; ++shift) {
+            Grid g{pitch, l.phase};
+            for (int a = 0; a < 3; ++a) {
+                if ((shift >> a) & 1) g.origin[a] += 0.5 * pitch;
+            }
+            out.push_back(g);
+        }
+    }
+    return out;
+}
+
+/// Per vertex, the sum of its faces' area-weighted normals.
+std::vector<Vec3> vertex_normals(const Mesh& mesh) {
+    std::vector<Vec3> normals(mesh.vertex_count(), Vec3::Zero());
+    for (const Triangle& t : mesh.triangles) {
+        const auto& x = mesh.positions;
+        const Vec3 n = (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]);
+        for (Index v : t) normals[v] += n;
+    }
+    return normals;
+}
+
+/// The share of vertex coordinates on a line of `grid` whose vertex does not face along that
+/// axis. A cell mean lies on a grid plane only where all its crossings do, on a flat face lying
+/// in that plane: its normal points along the axis.
+double stray_on_lines(const Mesh& mesh, const std::vector<Vec3>& normals, const Grid& grid,
+                      double tol) {
+    const double within = 2.0 * tol / grid.pitch;
+    std::size_t stray = 0;
+    for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+        for (int a = 0; a < 3; ++a) {
+            const bool on =
+                std::abs(line_offset(mesh.positions[v][a], grid.origin[a], grid.pitch)) <= within;
+            stray += on && std::abs(normals[v][a]) < 0.9 * normals[v].norm() ? 1 : 0;
+        }
+    }
+    return static_cast<double>(stray) / (3.0 * static_cast<double>(mesh.vertex_count()));
+}
+
+/// The candidate with the most dual triangles, and its share. A pitch a little off still fits
+/// most triangles of a small part: the first lattice within half a percent of the best share is
+/// taken. Where flat faces lie on grid planes, the grid shifted by half a cell across them fits
+/// as well: of that lattice's shifts, the one with the fewest stray coordinates on grid lines
+/// (stray_on_lines).
+std::pair<Grid, double> best_dual_grid(const Mesh& mesh, const std::vector<Grid>& candidates,
+                                       double tol) {
+    std::vector<double> shares;
+    for (const Grid& g : candidates) shares.push_back(dual_share(mesh, g, tol, kSampledTriangles));
+    const double best = *std::max_element(shares.begin(), shares.end());
+    const std::vector<Vec3> normals = vertex_normals(mesh);
+    // The candidates come in lattice order, kShifts per lattice: the first lattice that
+    // reaches the best share, its shift with the fewest stray coordinates.
+    std::size_t first = 0;
+    while (shares[first] < best - 0.005) ++first;
+    const std::size_t lattice_end = (first / kShifts + 1) * kShifts;
+    std::size_t chosen = first;
+    double fewest_stray = 2.0;
+    for (std::size_t i = first; i < lattice_end && i < candidates.size(); ++i) {
+        if (shares[i] < best - 0.005) continue;
+        const double stray = stray_on_lines(mesh, normals, candidates[i], tol);
+        if (stray < fewest_stray) chosen = i, fewest_stray = stray;
+    }
+    return {candidates[chosen], shares[chosen]};
+}
+
+/// The estimate from the mesh alone, coordinates compared within `tol`.
+PlacementEstimate estimate_within(const Mesh& mesh, double tol) {
+    PlacementEstimate e;
+    const std::vector<Lattice> lattices =
+        find_lattices(shared_values(mesh, tol), median_edge_length(mesh), tol);
+    if (lattices.empty()) {
+        e.reason =
+            "no coordinate values shared by many vertices at a common spacing: no grid, "
+            "exact";
+        return e;
+    }
+    // A grid-edge mesh takes the first grid whose edges hold its vertices. Only then may a mesh
+    // be dual: a grid-edge mesh is dual to its grid shifted by half a cell on every axis (its
+    // triangles span the eighths of a cell), so the dual test alone cannot tell them apart. A
+    // dual mesh takes the grid with the most dual triangles over all lattices (a pitch a little
+    // off still holds most of them).
+    const std::string source = "the grid of the shared coordinates";
+    std::vector<Grid> candidates;
+    for (const Lattice& lattice : lattices) {
+        if (lattice.pitch < 64.0 * tol) continue;  // rounded too coarsely to tell
+        for (const Grid& g : shifted_grids(lattice)) {
+            if (edge_stats(mesh, g, tol).on_edge >= kOnEdgeShare) {
+                return classify_on(mesh, coarsest_edge_grid(mesh, g, tol), tol, source);
+            }
+            candidates.push_back(g);
+        }
+    }
+    std::ostringstream r;
+    r.precision(9);
+    r << "the spacings of the shared coordinates (first " << lattices.front().pitch << ") ";
+    if (candidates.empty()) {
+        r << "are below the coordinates' rounding: cannot tell, exact";
+        e.reason = r.str();
+        return e;
+    }
+    const auto [dual, share] = best_dual_grid(mesh, candidates, tol);
+    if (share >= kDualShare) return classify_on(mesh, dual, tol, source);
+    e.pitch = dual.pitch;
+    e.on_grid_edge_share = edge_stats(mesh, dual, tol).on_edge;
+    e.dual_triangle_share = share;
+    r << "fit no grid: on the best, " << percent(e.on_grid_edge_share)
+      << " of the vertices on grid edges, " << percent(share)
+      << " of the triangles on the cells around one edge: cannot tell, exact";
+    e.reason = r.str();
+    return e;
+}
+
+}  // namespace
+
+std::string_view to_string(VertexPlacement placement) {
+    switch (placement) {
+        case VertexPlacement::Exact:
+            return "exact";
+        case VertexPlacement::Near:
+            return "near";
+        case VertexPlacement::Midpoint:
+            return "midpoint";
+    }
+    return "exact";
+}
+
+std::optional<VertexPlacement> vertex_placement_from_string(std::string_view name) {
+    for (VertexPlacement p :
+         {VertexPlacement::Exact, VertexPlacement::Near, VertexPlacement::Midpoint}) {
+        if (name == to_string(p)) return p;
+    }
+    return std::nullopt;
+}
+
+PlacementEstimate estimate_vertex_placement(const Mesh& mesh, const std::optional<Grid>& given) {
+    if (given && (!(given->pitch > 0.0) || !std::isfinite(given->pitch))) {
+        throw InvalidInput("grid pitch must be positive and finite");
+    }
+    if (given && !given->origin.allFinite()) throw InvalidInput("grid origin must be finite");
+    if (mesh.vertex_count() < 4 || mesh.face_count() == 0) {
+        PlacementEstimate e;
+        e.grid = given;
+        e.reason = "too few vertices to show how they were placed: exact";
+        return e;
+    }
+    // Float coordinates may be exact (a dyadic grid: then only double's noise lets a bisection
+    // vertex h/512 off a line be told from it) or rounded: the first where nearly every vertex
+    // lies on grid edges, else the rounded reading.
+    const auto [exact_tol, float_tol] = coordinate_tolerances(mesh);
+    const auto estimate = [&](double tol) {
+        return given ? classify_on(mesh, *given, tol, "the given grid")
+                     : estimate_within(mesh, tol);
+    };
+    PlacementEstimate e = estimate(exact_tol);
+    if (float_tol && e.on_grid_edge_share < kOnEdgeShare) e = estimate(*float_tol);
+    return e;
+}
+
+}  // namespace resharp
