@@ -5,6 +5,7 @@
 #include <limits>
 #include <type_traits>
 #include <variant>
+#include <vector>
 
 #include "resharp/core/errors.h"
 #include "resharp/pipeline/option_table.h"
@@ -102,6 +103,20 @@ bool flag_keyword(const py::kwargs& keywords, const char* name) {
     return value.cast<bool>();
 }
 
+/// grid=: a number (the pitch) or a sequence of 1 or 4 numbers (the pitch and a grid point);
+/// None (the default) has the grid inferred.
+std::vector<double> grid_numbers(py::handle value) {
+    if (is_real(value)) return {value.cast<double>()};
+    if (!py::isinstance<py::sequence>(value) || py::isinstance<py::str>(value))
+        wrong_type("grid", "a pitch or (pitch, x, y, z)", value);
+    std::vector<double> numbers;
+    for (py::handle x : value.cast<py::sequence>()) {
+        if (!is_real(x)) wrong_type("grid", "numbers", value);
+        numbers.push_back(x.cast<double>());
+    }
+    return numbers;
+}
+
 const OptionInfo* find_option(const std::string& keyword) {
     for (const OptionInfo& info : restore_option_table()) {
         if (keyword_name(info.name) == keyword) return &info;
@@ -157,6 +172,10 @@ RestoreCall parse_keywords(const py::kwargs& keywords) {
     for (const auto& [key, value] : keywords) {
         const std::string keyword = py::str(key).cast<std::string>();
         if (keyword == "weld" || keyword == "segmentation" || keyword == paper) continue;
+        if (keyword == kGridOptionName) {
+            if (!value.is_none()) set_grid(call.options.vertices, grid_numbers(value));
+            continue;
+        }
         const OptionInfo* info = find_option(keyword);
         if (info == nullptr) {
             throw py::type_error("restore() got an unexpected keyword argument '" + keyword + "'");
@@ -179,6 +198,7 @@ py::list describe_keywords() {
         describe("segmentation", py::bool_(false), "bool", py::none(), kSegmentationHelp));
     entries.append(describe(keyword_name(kPaperOptionName), py::bool_(false), "bool", py::none(),
                             kPaperOptionHelp));
+    entries.append(describe(kGridOptionName, py::none(), "tuple", py::none(), kGridOptionHelp));
     for (const OptionInfo& info : restore_option_table()) {
         entries.append(std::visit(
             [&](const auto& f) { return describe(keyword_name(info.name), info.help, f); },

@@ -2,6 +2,7 @@
 // surface (docs/design.md §5, docs/results.md): ideal points on the exact junction of the job's
 // surfaces, and the first-order (eq. 5.2) ones beside them. A thin layer over resharp::eval.
 
+#include <cmath>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -227,6 +228,34 @@ json cad_block(const ExactReference& reference, const Mesh& input, const Mesh& o
         {"stray_beyond_diagonals", cad.far}};
 }
 
+/// The input with its vertices where `output` (which starts with them, in order) has them:
+/// the input itself unless the restoration moved vertices, as near-surface restoration does
+/// within a grid cell.
+/// \throws InvalidInput if output has fewer vertices, or moved one further than a cell's
+///         diagonal (sqrt(3) h).
+Mesh input_as_placed(const Mesh& input, const Mesh& output, double h) {
+    if (output.vertex_count() < input.vertex_count())
+        throw InvalidInput("the output has fewer vertices than the input");
+    Mesh placed{{output.positions.begin(), output.positions.begin() + input.vertex_count()},
+                input.triangles};
+    for (std::size_t v = 0; v < input.vertex_count(); ++v) {
+        const double move = (placed.positions[v] - input.positions[v]).norm();
+        if (move > std::sqrt(3.0) * h * (1.0 + 1e-9)) {
+            throw InvalidInput("output vertex " + std::to_string(v) + " lies " +
+                               std::to_string(move) + " mm from input vertex " + std::to_string(v) +
+                               ", more than a grid cell's diagonal");
+        }
+    }
+    return placed;
+}
+
+std::size_t moved_count(const Mesh& input, const Mesh& placed) {
+    std::size_t count = 0;
+    for (std::size_t v = 0; v < input.vertex_count(); ++v)
+        count += placed.positions[v] != input.positions[v];
+    return count;
+}
+
 void run_evaluate(EvaluateArguments args) {
     const StageTimer total;
     const StageTimer sampling;
@@ -238,7 +267,11 @@ void run_evaluate(EvaluateArguments args) {
     const eval::Oracle oracle = eval::read_oracle(args.oracle, input);
     const Restored restored = obtain_restored(args, input, oracle);
     const Mesh& output = restored.mesh;
-    eval::check_output_extends_input(input, output);
+    // A near-surface restoration moves input vertices (issue 14): the scores that tell the
+    // output's new vertices from the input's read the input where it was moved to.
+    const Mesh placed = input_as_placed(input, output, h);
+    const bool moved = placed.positions != input.positions;
+    eval::check_output_extends_input(placed, output);
 
     const eval::SurfaceSamples exact = eval::sample_exact_surface(reference.grid);
     const double sampling_seconds = std::chrono::duration<double>(sampling.elapsed()).count();
@@ -258,9 +291,9 @@ void run_evaluate(EvaluateArguments args) {
     const double junction_seconds = std::chrono::duration<double>(junctions.elapsed()).count();
 
     const eval::RestorationScore score =
-        eval::score_restoration(input, output, ideal.points, exact, on_junction);
+        eval::score_restoration(placed, output, ideal.points, exact, on_junction);
     const eval::RestorationScore first =
-        eval::score_restoration(input, output, first_order, exact, args.restoration);
+        eval::score_restoration(placed, output, first_order, exact, args.restoration);
     const double tau = args.restoration.tolerance * h;
 
     json j;
@@ -282,14 +315,14 @@ void run_evaluate(EvaluateArguments args) {
     j["ideal_points"]["restored_by_input_vertices"] = score.restored_by_input_vertices;
     j["ideal_points"]["counted_apart"] = counted_apart(ideal);
     j["miss_causes"] = to_json(eval::find_miss_causes(
-        input, output, ideal.points, score.ideal_distance, tau, restored.segmentation));
+        placed, output, ideal.points, score.ideal_distance, tau, restored.segmentation));
     j["first_order"] = {{"restoration_rate", first.rate},
                         {"restoration_rate_edges", first.rate_edges},
                         {"restoration_rate_corners", first.rate_corners},
                         {"restoration_rate_within_reach", first.rate_within_reach},
                         {"false_insertions", first.false_insertions},
                         {"ideal_points", to_json(first)},
-                        {"miss_causes", to_json(eval::find_miss_causes(input, output, first_order,
+                        {"miss_causes", to_json(eval::find_miss_causes(placed, output, first_order,
                                                                        first.ideal_distance, tau,
                                                                        restored.segmentation))}};
     j["detection_source"] = restored.detection_source;
@@ -305,8 +338,12 @@ void run_evaluate(EvaluateArguments args) {
 
     const eval::MeshValidity valid_in = eval::check_validity(input);
     const eval::MeshValidity valid_out = eval::check_validity(output);
-    j["flipped_triangles"] =
-        eval::count_flipped_faces(input, output, oracle, exact, eval::FlipScope::ChangedFaces);
+    // Moved faces keep their corners' numbers: with moves every output face is judged.
+    j["flipped_triangles"] = eval::count_flipped_faces(
+        placed, output, oracle, exact,
+        moved ? eval::FlipScope::AllFaces : eval::FlipScope::ChangedFaces);
+    j["flipped_scope"] = moved ? "all faces" : "changed faces";
+    j["moved_input_vertices"] = moved_count(input, placed);
     j["flipped_triangles_input"] =
         eval::count_flipped_faces(input, input, oracle, exact, eval::FlipScope::AllFaces);
     j["self_intersections"] = valid_out.self_intersections;

@@ -25,14 +25,28 @@ std::string describe_defects(const MeshDiagnostics& d) {
     return text.empty() ? "none" : text + " (left unchanged)";
 }
 
+/// The vertex placement, where it is not the exact path: "; vertices near the surface (measured:
+/// REASON), 1200 moved, at most 0.21 mm, 3 moves undone".
+std::string vertices_summary(const RestoreReport& r) {
+    if (r.vertex_placement == "exact") return {};
+    std::ostringstream text;
+    text << std::fixed << std::setprecision(3) << "; vertices "
+         << (r.vertex_placement == "near" ? "near the surface" : "at grid-edge midpoints") << " ("
+         << (r.placement_measured ? "measured: " + r.placement_reason : "as given") << "), "
+         << r.moved_vertices << " moved, at most " << r.largest_move << " mm, " << r.moves_undone
+         << " moves undone";
+    return text.str();
+}
+
 }  // namespace
 
 std::string summarize(const RestoreReport& r, const std::string& input, const std::string& output) {
     const double edge_time = seconds(r.time(Stage::Curvature) + r.time(Stage::EdgeSegmentation));
     const double feature_time = seconds(r.time(Stage::FeatureSegmentation));
-    const double restore_time = seconds(
-        r.time(Stage::Classification) + r.time(Stage::FeatureNormals) + r.time(Stage::SharpPoints) +
-        r.time(Stage::Guard) + r.time(Stage::Split) + r.time(Stage::HarmCheck));
+    const double restore_time =
+        seconds(r.time(Stage::Classification) + r.time(Stage::FeatureNormals) +
+                r.time(Stage::SharpPoints) + r.time(Stage::VertexMoves) + r.time(Stage::Guard) +
+                r.time(Stage::Split) + r.time(Stage::HarmCheck));
     std::ostringstream text;
     text << std::fixed << std::setprecision(3);
     text << "resharp: " << input << " -> " << output << ": " << r.input_triangles
@@ -45,6 +59,7 @@ std::string summarize(const RestoreReport& r, const std::string& input, const st
          << " for quality, " << r.refused_by_guard << " by the guard, " << r.refused_missing_normal
          << " without a feature normal; " << r.undone_points << " undone by the harm check in "
          << r.harm_rounds << (r.harm_rounds == 1 ? " round" : " rounds") << ")"
+         << vertices_summary(r)
          << (r.duplicate_faces_removed > 0
                  ? "; removed " + std::to_string(r.duplicate_faces_removed) + " duplicate faces"
                  : std::string())

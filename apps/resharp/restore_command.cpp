@@ -1,3 +1,5 @@
+#include <charconv>
+#include <cmath>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -8,6 +10,7 @@
 #include "batch.h"
 #include "commands.h"
 #include "report_json.h"
+#include "resharp/core/errors.h"
 #include "resharp/pipeline/option_table.h"
 #include "restore_file.h"
 
@@ -61,8 +64,9 @@ void bind_options(CLI::App& command, RestoreOptions& o, bool& paper) {
     for (const OptionInfo& info : restore_option_table()) {
         CLI::Option* option = std::visit(
             [&](const auto& f) {
-                return add_table_option(command, "--" + std::string(info.name),
-                                        std::string(info.help), f, o);
+                std::string flags = "--" + std::string(info.name);
+                if (!info.cli_alias.empty()) flags += ",--" + std::string(info.cli_alias);
+                return add_table_option(command, flags, std::string(info.help), f, o);
             },
             info.field);
         option->group(kMethodGroup);
@@ -72,6 +76,33 @@ void bind_options(CLI::App& command, RestoreOptions& o, bool& paper) {
                                                std::string(kPaperOptionHelp));
     paper_flag->group(kMethodGroup);
     for (CLI::Option* choice : paper_choices) paper_flag->excludes(choice);
+}
+
+/// --grid PITCH[,X,Y,Z] into `vertices`: the grid's pitch and, where given, its origin.
+void bind_grid_option(CLI::App& command, VertexOptions& vertices) {
+    auto parse = [&vertices](const std::string& text) {
+        std::vector<double> numbers;
+        const char* at = text.data();
+        const char* const end = text.data() + text.size();
+        // Bound: each pass reads at least one character or throws.
+        while (at < end) {
+            double x = 0.0;
+            const auto [next, error] = std::from_chars(at, end, x);
+            if (error != std::errc() || !std::isfinite(x) || (next != end && *next != ','))
+                throw CLI::ValidationError("--grid", "not a number list: '" + text + "'");
+            numbers.push_back(x);
+            at = next == end ? end : next + 1;
+        }
+        try {
+            set_grid(vertices, numbers);
+        } catch (const InvalidInput& e) {
+            throw CLI::ValidationError("--grid", std::string(e.what()) + ": '" + text + "'");
+        }
+    };
+    command
+        .add_option_function<std::string>("--" + std::string(kGridOptionName), parse,
+                                          std::string(kGridOptionHelp))
+        ->group(kMethodGroup);
 }
 
 void run_restore(const RestoreArguments& args, const CLI::App& command) {
@@ -118,6 +149,7 @@ void add_restore_command(CLI::App& app) {
                       "print no summary (a batch still prints each failure)");
     add_batch_options(*command, args->batch);
     bind_options(*command, args->options, args->paper);
+    bind_grid_option(*command, args->options.vertices);
     command->callback([args, command] { run_restore(*args, *command); });
 }
 

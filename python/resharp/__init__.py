@@ -95,7 +95,8 @@ restore.__signature__ = _inspect.Signature(
        for name, entry in KEYWORDS.items()],
     return_annotation=RestoreResult)
 restore.__doc__ = """Restores the sharp edges and corners of a mesh made by grid-based machining
-simulation (paper sections 3-5), without moving an input vertex.
+simulation (paper sections 3-5), without moving an input vertex unless vertices='near' or
+'midpoint' (measured with the default 'auto'): then within their grid cells (issue 14).
 
     vertices: (#V, 3) float32 or float64 numpy array, any memory layout (read once).
     faces: (#F, 3) int32, int64, uint32 or uint64 numpy array of indices into vertices,

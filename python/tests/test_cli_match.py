@@ -66,11 +66,14 @@ OTHER_VALUES = {
     "harm_rounds": (1, RELIEF),
     "keep_duplicate_faces": (True, RELIEF),
     "threads": (1, BRACKET),
+    "vertex_placement": ("near", BRACKET),
+    "grid": (0.5, BRACKET),
 }
 # Options that change neither: the thread count by design; the harm check's crossing test finds
 # no crossing on either mesh (their reports' harm_check.crossing is 0), so skipping it changes
 # nothing there.
-NO_EFFECT = {"threads", "no_crossing_check"}
+# A grid alone bounds moves only, and the bracket (exact crossings) takes the exact path.
+NO_EFFECT = {"threads", "no_crossing_check", "grid"}
 
 
 @pytest.fixture(scope="module")

@@ -30,10 +30,11 @@ def cli_options(cli):
     before, method = text.split("\nMethod options:\n")
     method = method.split("\n\n")[0]
     options = {}
-    # An entry: "  --name[ TYPE][=default][{false}][ Excludes: ...]" then its help, on the same
+    # An entry: "  --name[,--alias][ TYPE][=default][{false}][ Excludes: ...]" then its help, on the same
     # line after two spaces or on the lines below.
     for entry in re.split(r"\n(?=  --)", method.strip("\n")):
-        head = re.match(r"\s*--([a-z-]+)(?: (?:\{[^}]*\}|[A-Z]+\b))?(?:=(\S+))?(\{false\})?"
+        head = re.match(r"\s*--([a-z-]+)(?:,--[a-z-]+)?(?: (?:\{[^}]*\}|[A-Z]+\b))?(?:=(\S+))?"
+                        r"(\{false\})?"
                         r"(?: Excludes:(?: --[a-z-]+)+)?", entry)
         assert head, entry
         options[head[1].replace("-", "_")] = (head[2], words(entry[head.end():]))
@@ -53,7 +54,9 @@ def test_every_default_is_the_command_lines(cli_options):
     for name, (shown, _) in options.items():
         entry = resharp.KEYWORDS[name]
         default = entry["default"]
-        if shown is None:  # a flag: not given
+        if entry["type"] == "tuple":  # grid: none, inferred
+            assert shown is None and default is None, name
+        elif shown is None:  # a flag: not given
             assert entry["type"] == "bool" and default is False, name
         elif entry["type"] == "str":
             assert shown == default, name

@@ -203,6 +203,21 @@ TEST(VertexPlacement, MeshesFromNoGridAreExact) {
                               "surface nets rotated 27 degrees");
 }
 
+// One stray vertex (a fin off a marching-cubes mesh) moves the grid search to a grid the mesh
+// looks dual to; the vertices on that grid's edges tell it from cell means.
+TEST(VertexPlacement, AGridEdgeMeshWithAStrayVertexIsExact) {
+    for (const double cells : {40.0, 60.0}) {
+        Mesh mesh = cad_meshes("stepped_block", cells, 0.4142).front().mesh;  // mc
+        const Triangle t = mesh.triangles[mesh.face_count() / 2];
+        const Vec3 centre =
+            (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0;
+        mesh.positions.push_back(centre + Vec3(0.1, 0.3, 1.0));
+        mesh.triangles.push_back({t[0], t[1], static_cast<Index>(mesh.vertex_count() - 1)});
+        const PlacementEstimate e = estimate_vertex_placement(mesh);
+        EXPECT_EQ(e.placement, VertexPlacement::Exact) << cells << ": " << e.reason;
+    }
+}
+
 // CAMotics bisects to cell / 256: its vertices take the exact path.
 TEST(VertexPlacement, CamoticsMeshIsExact) {
     const Mesh relief =

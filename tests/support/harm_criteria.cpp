@@ -131,8 +131,11 @@ std::size_t turned_against_nearest(const Mesh& input, const Mesh& output,
     std::size_t turned = 0;
     for (std::size_t o = 0; o < output.face_count(); ++o) {
         const Triangle& t = output.triangles[o];
-        if (t == input.triangles[source_face[o]]) continue;
         const auto& x = output.positions;
+        const bool corners_in_place = std::all_of(t.begin(), t.end(), [&](Index v) {
+            return v < input.vertex_count() && x[v] == input.positions[v];
+        });
+        if (t == input.triangles[source_face[o]] && corners_in_place) continue;
         const Vec3 n = triangle_normal(x[t[0]], x[t[1]], x[t[2]]);
         bool is_turned =
             n.isZero(0.0) || !nearest.nearest_agree((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0, n);
@@ -153,6 +156,10 @@ std::size_t new_self_intersections(const Mesh& input, const Mesh& output,
     return added_pairs;
 }
 
+HarmCriteria criteria_for(const RestoreReport& report) {
+    return {.allowed_move = std::sqrt(3.0) * report.grid_pitch};
+}
+
 HarmFound find_harm(const Mesh& input, const Mesh& output, std::span<const Index> source_face,
                     const HarmCriteria& criteria) {
     HarmFound h;
@@ -160,7 +167,9 @@ HarmFound find_harm(const Mesh& input, const Mesh& output, std::span<const Index
         h.moved_input_vertices = input.vertex_count() - output.vertex_count();
     }
     for (std::size_t v = 0; v < std::min(input.vertex_count(), output.vertex_count()); ++v) {
-        h.moved_input_vertices += output.positions[v] != input.positions[v];
+        const double move = (output.positions[v] - input.positions[v]).norm();
+        h.moved_input_vertices +=
+            output.positions[v] != input.positions[v] && !(move <= criteria.allowed_move);
     }
     h.bad_source_faces = source_face.size() == output.face_count() ? 0 : 1;
     for (Index s : source_face) h.bad_source_faces += s >= input.face_count();

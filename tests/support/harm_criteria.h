@@ -8,13 +8,16 @@
 #include <span>
 
 #include "resharp/mesh/mesh.h"
+#include "resharp/pipeline/report.h"
 
 namespace resharp::test {
 
 /// What a restoration made worse than its input; all zero when it did no harm.
 struct HarmFound {
-    std::size_t moved_input_vertices = 0;  ///< input vertices not kept bit for bit at their index
-    std::size_t bad_source_faces = 0;      ///< output faces whose source face is out of range
+    /// Input vertices not kept bit for bit at their index (or, with HarmCriteria::allowed_move,
+    /// moved farther).
+    std::size_t moved_input_vertices = 0;
+    std::size_t bad_source_faces = 0;  ///< output faces whose source face is out of range
     /// Input faces no output face comes from that are not a later copy of an exact duplicate
     /// (same vertices, same orientation) of an earlier input face: faces lost.
     std::size_t lost_faces = 0;
@@ -33,7 +36,8 @@ struct HarmFound {
 };
 
 /// Takes the input, the output and its source faces (#F out, as RestoreResult::source_face);
-/// gives the output faces that replace an input face (differ from their source) and turn more
+/// gives the output faces that replace an input face (differ from their source, or have a corner
+/// moved off its input place) and turn more
 /// than 90 degrees against every input face nearest their centroid or one of their vertices,
 /// searched by brute force over the whole input (ties within rounding count as nearest). A face
 /// of zero area counts as turned. Expects valid source faces.
@@ -50,7 +54,14 @@ struct HarmCriteria {
     /// Run the CGAL self-intersection test on input and output (it costs the most: about as much
     /// as restore() itself on a clean mesh).
     bool self_intersections = true;
+    /// How far (mm) input vertices may move: near-surface restoration moves them within their
+    /// grid cells. 0: not at all.
+    double allowed_move = 0.0;
 };
+
+/// The criteria for a restoration that reported `report`: input vertices may move within a
+/// cell's diagonal of the grid it names (near-surface restoration), not at all without one.
+HarmCriteria criteria_for(const RestoreReport& report);
 
 /// Every criterion on the input, the output and its source faces (#F out). Edges are counted
 /// against the input less the exact duplicates restore() removes (MeshRepairOptions): removing

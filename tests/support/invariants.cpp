@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "resharp/eval/self_intersections.h"
@@ -62,7 +63,7 @@ void expect_no_new_self_intersections(const Mesh& input, const Mesh& output) {
 
 void expect_no_harm(const Mesh& input, const RestoreResult& r, const RestoreOptions& options) {
     EXPECT_LE(r.report.harm_rounds, static_cast<std::size_t>(options.max_harm_rounds));
-    const HarmFound h = find_harm(input, r.mesh, r.source_face);
+    const HarmFound h = find_harm(input, r.mesh, r.source_face, criteria_for(r.report));
     EXPECT_EQ(h.moved_input_vertices, 0u);
     EXPECT_EQ(h.bad_source_faces, 0u);
     EXPECT_EQ(h.lost_faces, 0u);

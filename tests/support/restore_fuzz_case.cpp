@@ -118,8 +118,13 @@ void merge_vertices(Mesh& mesh, std::size_t count, std::mt19937& random) {
 }
 
 /// The questions restore() may ask its stop callback: once before each stage, the three stages
-/// of a harm round once per round (restore.h, RestoreOptions::stop).
-std::size_t question_bound(std::size_t rounds) { return kStageCount + 3 * (rounds - 1); }
+/// of a harm round once per round (restore.h, RestoreOptions::stop). Near-surface restoration
+/// runs the stages once more for the moves (twice for midpoints), then once per round of moves,
+/// and the exact path at the end if the moves were all given up.
+std::size_t question_bound(std::size_t rounds, bool moves = false, std::size_t move_rounds = 0) {
+    const std::size_t once = kStageCount + 3 * (rounds - 1);
+    return moves ? once * (move_rounds + 3) : once;
+}
 
 /// A deadline missed by more than this is not honoured: one stage of restore() on these meshes
 /// takes well under a second, even with the sanitizers.
@@ -175,7 +180,7 @@ std::string given_back_problem(const Mesh& input, const RestoreResult& r) {
 }
 
 std::string harm_problem(const Mesh& input, const RestoreResult& r) {
-    const HarmFound h = find_harm(input, r.mesh, r.source_face);
+    const HarmFound h = find_harm(input, r.mesh, r.source_face, criteria_for(r.report));
     if (!h.any()) return "";
     return "harm: moved " + std::to_string(h.moved_input_vertices) + ", bad sources " +
            std::to_string(h.bad_source_faces) + ", lost faces " + std::to_string(h.lost_faces) +
@@ -215,7 +220,8 @@ std::string restore_fuzz_case(std::span<const std::uint8_t> bytes) {
         return "harm rounds " + std::to_string(r.report.harm_rounds) + " > " +
                std::to_string(rounds);
     }
-    if (asked > question_bound(rounds)) return "asked to stop " + std::to_string(asked) + " times";
+    if (asked > question_bound(rounds, r.report.vertex_placement != "exact", r.report.move_rounds))
+        return "asked to stop " + std::to_string(asked) + " times";
     if (request.deadline && elapsed > *request.deadline + kDeadlineGrace) {
         return "deadline missed by more than " + std::to_string(kDeadlineGrace.count()) + " s";
     }

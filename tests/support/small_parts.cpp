@@ -84,10 +84,15 @@ std::string_view to_string(SmallPart part) {
     return "unknown";
 }
 
+sim::CsgSolid small_part_solid(SmallPart part) { return sim::CsgSolid(description(part)); }
+
+sim::GridSpec small_part_grid(SmallPart part, double pitch) {
+    return sim::phased_grid(small_part_solid(part).bounds(), pitch, 0.37);
+}
+
 Mesh small_part(SmallPart part, double pitch, sim::Mesher mesher) {
-    const sim::CsgSolid solid(description(part));
     const sim::DexelGrid grid =
-        sim::sample_solid(sim::phased_grid(solid.bounds(), pitch, 0.37), solid);
+        sim::sample_solid(small_part_grid(part, pitch), small_part_solid(part));
     return sim::mesh_dexels(grid, {.mesher = mesher}).mesh;
 }
 

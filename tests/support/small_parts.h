@@ -7,7 +7,9 @@
 #include <string_view>
 
 #include "resharp/mesh/mesh.h"
+#include "resharp/sim/csg.h"
 #include "resharp/sim/marching_cubes.h"
+#include "resharp/sim/tridexel.h"
 
 namespace resharp::test {
 
@@ -31,5 +33,9 @@ std::string_view to_string(SmallPart part);
 /// pitch 0.5 they have 5,920, 4,644 and 5,112 triangles; the count grows as 1 / pitch^2.
 Mesh small_part(SmallPart part, double pitch = 0.5,
                 sim::Mesher mesher = sim::Mesher::MarchingCubes);
+
+/// The part's exact solid, and the grid small_part() samples it on at `pitch`.
+sim::CsgSolid small_part_solid(SmallPart part);
+sim::GridSpec small_part_grid(SmallPart part, double pitch = 0.5);
 
 }  // namespace resharp::test

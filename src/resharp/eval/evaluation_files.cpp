@@ -81,8 +81,24 @@ Mesh match_restored(const Mesh& read, const std::string& name, const Mesh& input
     return out;
 }
 
+bool starts_with_moved_input(const Mesh& written, const Mesh& input) {
+    const std::size_t n = input.vertex_count();
+    if (written.vertex_count() < n) return false;
+    const PositionIndex input_index(input.positions);
+    std::size_t in_place = 0;
+    for (std::size_t v = 0; v < written.vertex_count(); ++v) {
+        const std::optional<Index> i = input_index.find(written.positions[v]);
+        if (i && *i != v) return false;
+        in_place += i.has_value();
+    }
+    return in_place < n;
+}
+
 Mesh read_restored(const std::filesystem::path& path, const Mesh& input) {
-    return match_restored(weld(io::read_mesh(path)), path.string(), input);
+    TriangleSoup soup = io::read_mesh(path);
+    Mesh written{std::move(soup.points), std::move(soup.triangles)};
+    if (starts_with_moved_input(written, input)) return written;
+    return match_restored(weld(to_soup(written)), path.string(), input);
 }
 
 std::vector<BandRole> decode_segment_roles(const io::PlyMesh& ply, const std::string& name,

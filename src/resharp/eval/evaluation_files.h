@@ -33,7 +33,13 @@ Oracle read_oracle(const std::filesystem::path& path, const Mesh& input);
 /// new vertices follow in their order in `read`; the triangles are `read`'s, renumbered.
 /// \throws InvalidInput (naming the first one) if an input vertex is missing from `read`.
 Mesh match_restored(const Mesh& read, const std::string& name, const Mesh& input);
-/// As above, reading and welding the mesh file at `path`. \throws also what read_mesh throws.
+/// Whether `written`, an indexed mesh as its file holds it, begins with the input's #V vertices
+/// in input order, some moved, as restore() writes a near-surface restoration (issue 14) whose
+/// moved vertices no position can find: some moved, and every vertex found in the input by
+/// position found at its own index. (The evaluation then bounds how far each moved.)
+bool starts_with_moved_input(const Mesh& written, const Mesh& input);
+/// As above, reading and welding the mesh file at `path`; a file that starts_with_moved_input()
+/// is taken as it is. \throws also what read_mesh throws.
 Mesh read_restored(const std::filesystem::path& path, const Mesh& input);
 
 /// Takes a `--segments` `ply` read from `name` and the input's face count #F; gives #F roles

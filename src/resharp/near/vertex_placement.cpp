@@ -24,6 +24,11 @@ namespace {
 constexpr double kOnEdgeShare = 0.9999;
 constexpr double kMidpointShare = 0.9;  // of the vertices on grid edges, at their edge's middle
 constexpr double kDualShare = 0.9;      // triangles on the four cells around one grid edge
+/// Cell means lie off the edges of the grid they are dual to (a cell's centre is on none of its
+/// edges), but a grid-edge mesh with a few stray vertices (a fin, a patch from another mesher)
+/// has a share of its vertices on the edges of the grid it is dual to (those on edges along the
+/// axis it is shifted across): more than this, and it is not taken for near.
+constexpr double kDualOnEdgeShare = 0.05;
 /// A lattice's strength (the mean resultant of its values' phases) below which the shared
 /// coordinate values show no common spacing.
 constexpr double kMinStrength = 0.25;
@@ -439,8 +444,9 @@ PlacementEstimate classify_on(const Mesh& mesh, const Grid& grid, double tol,
         return e;
     }
     e.dual_triangle_share = dual_share(mesh, grid, tol, kSampledTriangles);
-    e.placement =
-        e.dual_triangle_share >= kDualShare ? VertexPlacement::Near : VertexPlacement::Exact;
+    e.placement = e.dual_triangle_share >= kDualShare && s.on_edge <= kDualOnEdgeShare
+                      ? VertexPlacement::Near
+                      : VertexPlacement::Exact;
     e.reason = where + percent(s.on_edge) + " of the vertices on grid edges, " +
                percent(e.dual_triangle_share) + " of the triangles on the cells around one edge: " +
                (e.placement == VertexPlacement::Near ? "near (cell means)" : "cannot tell, exact");

@@ -32,7 +32,20 @@ constexpr std::array<std::pair<std::string_view, PointPlacement>, 2> kPlacements
     {"second-order", PointPlacement::SecondOrder},
 }};
 
-const std::array<OptionInfo, 25> kTable{{
+constexpr std::array<std::pair<std::string_view, VertexMode>, 4> kVertexModes{{
+    {"auto", VertexMode::Auto},
+    {"exact", VertexMode::Exact},
+    {"near", VertexMode::Near},
+    {"midpoint", VertexMode::Midpoint},
+}};
+
+const std::array<OptionInfo, 26> kTable{{
+    {"vertex-placement",
+     "where the mesher put the vertices: 'exact' on the surface (the paper's method: no vertex "
+     "moves), 'near' it (cell means: surface nets, OpenVDB), at grid-edge 'midpoint's, or "
+     "'auto': measured from the mesh, exact when unclear",
+     ChoiceField<VertexMode>{&nested<&R::vertices, &VertexOptions::mode>, kVertexModes}, false,
+     "vertices"},
     {"curvature-feature",
      "what k-means clusters: 'signed' (k1, k2) as the paper, or 'magnitude' (|k|min, |k|max), "
      "which keeps concave and convex edges together",

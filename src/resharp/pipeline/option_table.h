@@ -34,9 +34,10 @@ struct ChoiceField {
     std::span<const std::pair<std::string_view, E>> choices;
 };
 
-using OptionField = std::variant<ValueField<double>, ValueField<int>, ValueField<std::size_t>,
-                                 FlagField, ChoiceField<CurvatureFeature>,
-                                 ChoiceField<NormalEstimate>, ChoiceField<PointPlacement>>;
+using OptionField =
+    std::variant<ValueField<double>, ValueField<int>, ValueField<std::size_t>, FlagField,
+                 ChoiceField<CurvatureFeature>, ChoiceField<NormalEstimate>,
+                 ChoiceField<PointPlacement>, ChoiceField<VertexMode>>;
 
 struct OptionInfo {
     /// The flag without its dashes ("region-angle"); Python writes '_' for '-' (region_angle).
@@ -45,6 +46,9 @@ struct OptionInfo {
     OptionField field;
     /// paper_variant() sets this field, so the option and the paper's choices exclude each other.
     bool paper_choice = false;
+    /// A second flag for the command line where the name a user looks for there clashes with
+    /// Python's arguments ("vertices": restore(vertices, faces)); empty for none.
+    std::string_view cli_alias = {};
 };
 
 /// Every option, in the order `resharp restore --help` lists them. Static storage.
@@ -56,6 +60,14 @@ inline constexpr std::string_view kPaperOptionHelp =
     "the paper's choice wherever resharp makes another (docs/method.md): signed k-means, "
     "unlimited region growing, plain merging, borders confirmed by edge vertices only, eq. 5.1 "
     "normals";
+
+/// The name and help of the grid option (VertexOptions::grid): `--grid PITCH[,X,Y,Z]` on the
+/// command line, `grid=pitch` or `grid=(pitch, x, y, z)` in Python; see set_grid().
+inline constexpr std::string_view kGridOptionName = "grid";
+inline constexpr std::string_view kGridOptionHelp =
+    "the grid the mesher worked on: its pitch, or its pitch and a grid point x, y, z (mm); "
+    "without it, inferred from the mesh. It bounds how far the near and midpoint vertex "
+    "placements move a vertex";
 
 /// The name of `value` among `field`'s choices.
 template <class E>

@@ -5,9 +5,13 @@
 ///   restore(mesh, {.features = {.max_normal_angle_deg = 6.0}});
 
 #include <chrono>
+#include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 
+#include "resharp/near/vertex_moves.h"
+#include "resharp/near/vertex_placement.h"
 #include "resharp/restoration/band_classification.h"
 #include "resharp/restoration/feature_normals.h"
 #include "resharp/restoration/harm_check.h"
@@ -24,6 +28,24 @@ struct MeshRepairOptions {
     /// copy, as simulators write them along their job seams. Pairs of opposite faces are kept
     /// either way (counted in the report).
     bool remove_duplicate_faces = true;
+};
+
+/// How restore() takes the vertices' placement (issue 14).
+enum class VertexMode : std::uint8_t {
+    Auto,      ///< measured from the mesh (estimate_vertex_placement()); exact when unclear
+    Exact,     ///< on the surface: the paper's method, no vertex moves
+    Near,      ///< near it (cell means of crossings): band vertices move within their cells
+    Midpoint,  ///< at grid-edge midpoints: vertices move along their grid edges
+};
+
+struct VertexOptions {
+    VertexMode mode = VertexMode::Auto;
+    /// The grid the mesher worked on; a pitch of 0 has it inferred from the mesh, a pitch with
+    /// no origin (grid_origin_given false) has the origin inferred for it. Without a grid,
+    /// given or found, nothing moves (the exact path).
+    Grid grid;
+    bool grid_origin_given = false;
+    VertexMoveOptions moves;
 };
 
 /// When a library caller wants restore() to give up (OpenVDB's interrupter is the model). It is
@@ -44,6 +66,7 @@ struct StopWhen {
 
 struct RestoreOptions {
     MeshRepairOptions repair;             ///< mesher artefacts: duplicate faces
+    VertexOptions vertices;               ///< on, near or beside the surface (issue 14)
     EdgeSegmentationOptions edges;        ///< paper §3: eps_K, P, flatness
     FeatureSegmentationOptions features;  ///< paper §4: eps_theta, tiny patch size, merging
     ClassificationOptions bands;          ///< paper §4 (end): which borders are sharp edges
@@ -68,5 +91,10 @@ struct RestoreOptions {
 /// edge vertices alone, feature normals by eq. 5.1. What the paper leaves open (docs/method.md,
 /// "our reading") and every other field stay as given.
 RestoreOptions paper_variant(RestoreOptions options);
+
+/// Sets `vertices`' grid from the command line's --grid PITCH[,X,Y,Z] or Python's grid=(...):
+/// the pitch, and where given a grid point (the origin).
+/// \throws InvalidInput unless there are 1 or 4 finite numbers and the pitch is positive.
+void set_grid(VertexOptions& vertices, std::span<const double> numbers);
 
 }  // namespace resharp

@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <cstddef>
+#include <string>
 #include <string_view>
 
 #include "resharp/mesh/diagnostics.h"
@@ -20,12 +21,13 @@ enum class Stage {
     FeatureSegmentation,  ///< region growing, bands, tiny patches, merging
     Classification,       ///< edge and corner triangles
     FeatureNormals,       ///< eq. 5.1
+    VertexMoves,          ///< near-surface meshes: vertices onto their fitted sides
     SharpPoints,          ///< eq. 5.2-5.5 and the spike test
     Guard,                ///< which points the split may insert (every round)
     Split,                ///< re-triangulation (every round)
     HarmCheck,            ///< the do-no-harm check (every round)
 };
-inline constexpr std::size_t kStageCount = 10;
+inline constexpr std::size_t kStageCount = 11;
 
 std::string_view stage_name(Stage stage);
 
@@ -73,6 +75,17 @@ struct RestoreReport {
     std::size_t harm_crossing = 0;  ///< pieces meeting a nearby face
     std::size_t harm_rounds = 0;    ///< rounds of guard, split and check run (1 if none found)
     std::size_t undone_points = 0;  ///< accepted points withdrawn because their pieces did harm
+
+    /// How the mesher placed the vertices (RestoreOptions::vertices, issue 14) and what
+    /// near-surface restoration did about it.
+    std::string_view vertex_placement = "exact";  ///< the path taken: exact, near or midpoint
+    bool placement_measured = false;  ///< measured from the mesh, not named by the caller
+    std::string placement_reason;     ///< what the measurement saw
+    double grid_pitch = 0.0;          ///< of the grid moves were bounded by; 0 if none
+    std::size_t moved_vertices = 0;   ///< input vertices moved in the output
+    double largest_move = 0.0;        ///< mm
+    std::size_t moves_undone = 0;     ///< planned moves the harm check gave up
+    std::size_t move_rounds = 0;      ///< rounds of moves, restoration and check against the input
 
     /// Mesher artefacts (MeshRepairOptions).
     std::size_t duplicate_faces_removed = 0;  ///< later copies of exact duplicate faces

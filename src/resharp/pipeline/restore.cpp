@@ -3,6 +3,8 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <string>
 
 #include "resharp/core/assert.h"
@@ -10,6 +12,8 @@
 #include "resharp/core/stage_timer.h"
 #include "resharp/curvature/local_height.h"
 #include "resharp/mesh/duplicate_faces.h"
+#include "resharp/near/vertex_moves.h"
+#include "resharp/near/vertex_placement.h"
 #include "resharp/restoration/harm_check.h"
 #include "resharp/restoration/point_guard.h"
 #include "resharp/restoration/sharp_points.h"
@@ -30,6 +34,8 @@ std::string_view stage_name(Stage stage) {
             return "classification";
         case Stage::FeatureNormals:
             return "feature normals";
+        case Stage::VertexMoves:
+            return "vertex moves";
         case Stage::SharpPoints:
             return "sharp points";
         case Stage::Guard:
@@ -160,6 +166,26 @@ SplitMesh unchanged(const Mesh& mesh) {
 
 }  // namespace
 
+namespace {
+
+/// detect_bands()'s last two stages, on the segmentations `d` holds.
+void classify_and_fit_normals(const Mesh& mesh, Detection& d, const RestoreOptions& options,
+                              StageClock& clock) {
+    clock.run(Stage::Classification, [&] {
+        d.bands = classify_bands(mesh, d.connectivity, d.normals.face, d.edges.is_edge,
+                                 d.features.face_patch, d.features.vertex_patch, options.bands);
+    });
+    clock.run(Stage::FeatureNormals, [&] {
+        d.feature_normals =
+            feature_normals(mesh, d.connectivity, d.normals.face, d.features.face_patch,
+                            d.features.vertex_patch, d.bands, options.normals);
+        d.bands =
+            drop_smooth_crossings(mesh, d.connectivity, d.bands, d.feature_normals, options.bands);
+    });
+}
+
+}  // namespace
+
 Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const RestoreOptions& options) {
     Detection d;
     d.connectivity = std::move(connectivity);
@@ -176,17 +202,19 @@ Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const Restor
         d.features = segment_features(mesh, d.connectivity, d.normals.face, d.edges.is_edge,
                                       options.features);
     });
-    clock.run(Stage::Classification, [&] {
-        d.bands = classify_bands(mesh, d.connectivity, d.normals.face, d.edges.is_edge,
-                                 d.features.face_patch, d.features.vertex_patch, options.bands);
-    });
-    clock.run(Stage::FeatureNormals, [&] {
-        d.feature_normals =
-            feature_normals(mesh, d.connectivity, d.normals.face, d.features.face_patch,
-                            d.features.vertex_patch, d.bands, options.normals);
-        d.bands =
-            drop_smooth_crossings(mesh, d.connectivity, d.bands, d.feature_normals, options.bands);
-    });
+    classify_and_fit_normals(mesh, d, options, clock);
+    return d;
+}
+
+Detection detect_bands_after_moves(const Mesh& mesh, const Detection& before,
+                                   const RestoreOptions& options) {
+    Detection d;
+    d.connectivity = before.connectivity;
+    d.edges = before.edges;
+    d.features = before.features;
+    StageClock clock(d.stage_time, options.stop);
+    clock.run(Stage::MeshBuilding, [&] { d.normals = surface_normals(mesh, d.connectivity); });
+    classify_and_fit_normals(mesh, d, options, clock);
     return d;
 }
 
@@ -286,28 +314,161 @@ public:
             connectivity = build_connectivity(mesh);
         }
         const auto building_time = building.elapsed();
-
-        Detection detection = detect_bands(mesh, std::move(connectivity), options_);
-        add_times(detection.stage_time);
         report_.stage_time[static_cast<std::size_t>(Stage::MeshBuilding)] += building_time;
-        record(detection);
-        if (options_.keep_segmentation) keep(detection, duplicates);
-        // What the rest does not read goes before the rest allocates (peak memory).
-        detection.edges = {};
-        detection.features = {};
 
-        BandRestoration restored = restore_bands(detection.surface(mesh), detection.bands,
-                                                 detection.feature_normals, options_);
-        add_times(restored.stage_time);
-        record(restored);
-        result_.mesh = std::move(restored.output.mesh);
-        result_.source_face = std::move(restored.output.source_face);
+        const PlacementChoice placement = choose_placement(mesh);
+        if (placement.placement == VertexPlacement::Exact) {
+            restore_exact(mesh, std::move(connectivity), duplicates);
+        } else {
+            restore_near(mesh, std::move(connectivity), placement, duplicates);
+        }
         if (duplicates.removed > 0) {
             for (Index& f : result_.source_face) f = duplicates.kept[f];
         }
     }
 
 private:
+    struct PlacementChoice {
+        VertexPlacement placement = VertexPlacement::Exact;
+        Grid grid;
+    };
+
+    /// The caller's placement, or the measured one; exact wherever there is no grid to bound
+    /// the moves by. Fills the report's placement fields.
+    PlacementChoice choose_placement(const Mesh& mesh) {
+        const VertexOptions& v = options_.vertices;
+        if (v.mode == VertexMode::Exact) return {};
+        const std::optional<Grid> given =
+            v.grid.pitch > 0.0 && v.grid_origin_given ? std::optional<Grid>(v.grid) : std::nullopt;
+        PlacementEstimate estimate = estimate_vertex_placement(mesh, given);
+        if (v.grid.pitch > 0.0 && !v.grid_origin_given && estimate.grid &&
+            std::abs(estimate.grid->pitch - v.grid.pitch) > 1e-6 * v.grid.pitch) {
+            estimate.reason += "; the grid found is not of the pitch given";
+            estimate.grid.reset();
+        }
+        report_.placement_measured = v.mode == VertexMode::Auto;
+        report_.placement_reason = estimate.reason;
+        PlacementChoice choice;
+        choice.placement = v.mode == VertexMode::Near       ? VertexPlacement::Near
+                           : v.mode == VertexMode::Midpoint ? VertexPlacement::Midpoint
+                                                            : estimate.placement;
+        if (!estimate.grid) choice.placement = VertexPlacement::Exact;
+        if (choice.placement == VertexPlacement::Exact) return {};
+        choice.grid = *estimate.grid;
+        report_.vertex_placement = to_string(choice.placement);
+        report_.grid_pitch = choice.grid.pitch;
+        return choice;
+    }
+
+    /// The paper's method: input vertices stay where they are.
+    void restore_exact(const Mesh& mesh, Connectivity connectivity,
+                       const DuplicateFaces& duplicates) {
+        Detection detection = detect_bands(mesh, std::move(connectivity), options_);
+        add_times(detection.stage_time);
+        restore_detected(mesh, detection, duplicates);
+    }
+
+    /// Restores the bands `detection` found on `mesh` and takes the result.
+    void restore_detected(const Mesh& mesh, Detection& detection,
+                          const DuplicateFaces& duplicates) {
+        record(detection);
+        if (options_.keep_segmentation) keep(detection, duplicates);
+        // What the rest does not read goes before the rest allocates (peak memory).
+        detection.edges = {};
+        detection.features = {};
+        BandRestoration restored = restore_bands(detection.surface(mesh), detection.bands,
+                                                 detection.feature_normals, options_);
+        take(std::move(restored));
+    }
+
+    void take(BandRestoration restored) {
+        add_times(restored.stage_time);
+        record(restored);
+        result_.mesh = std::move(restored.output.mesh);
+        result_.source_face = std::move(restored.output.source_face);
+    }
+
+    /// Where the vertices go (near/vertex_moves.h). Near: band vertices onto the planes of the
+    /// patches found. Midpoint: first every vertex onto the plane of its neighbourhood, which
+    /// takes the stairs out of slanted faces, then, on the bands found on that mesh, onto the
+    /// planes of its patches.
+    /// `smoothed` receives the detection made on the way (midpoint), which the moved mesh's
+    /// segmentation is then taken from.
+    VertexMoves plan_moves(const InputSurface& surface, const Detection& input,
+                           const PlacementChoice& choice, std::optional<Detection>& smoothed) {
+        StageClock clock(report_.stage_time, options_.stop);
+        const VertexMoveOptions& options = options_.vertices.moves;
+        const std::vector<Vec3>& from = surface.mesh.positions;
+        MoveRule rule{choice.placement, choice.grid, FitScope::Patches};
+        VertexMoves moves;
+        if (choice.placement == VertexPlacement::Near) {
+            clock.run(Stage::VertexMoves, [&] {
+                moves = plan_vertex_moves(surface, from, input.features.vertex_patch, input.bands,
+                                          rule, options);
+            });
+            return moves;
+        }
+        rule.scope = FitScope::Neighbourhood;
+        clock.run(Stage::VertexMoves, [&] {
+            moves = plan_vertex_moves(surface, from, {}, input.bands, rule, options);
+        });
+        const Mesh stairless = moved_mesh(surface.mesh, moves);
+        smoothed = detect_bands(stairless, Connectivity(input.connectivity), options_);
+        add_times(smoothed->stage_time);
+        rule.scope = FitScope::Patches;
+        clock.run(Stage::VertexMoves, [&] {
+            moves =
+                plan_vertex_moves(smoothed->surface(stairless), from,
+                                  smoothed->features.vertex_patch, smoothed->bands, rule, options);
+        });
+        return moves;
+    }
+
+    /// Near-surface restoration (issue 14, near/vertex_moves.h): vertices moved onto the sides
+    /// fitted around them, the paper's method on the moved mesh, and the result held against
+    /// the input itself; moves whose faces do harm are given up and the rest tried again.
+    /// Bound: options.max_harm_rounds rounds, each but the last giving up at least one move;
+    /// past it, or where harm remains that no move explains, the exact path on the input.
+    void restore_near(const Mesh& mesh, Connectivity connectivity, const PlacementChoice& choice,
+                      const DuplicateFaces& duplicates) {
+        Detection input = detect_bands(mesh, std::move(connectivity), options_);
+        add_times(input.stage_time);
+        const InputSurface surface = input.surface(mesh);
+        std::optional<Detection> smoothed;
+        VertexMoves moves = plan_moves(surface, input, choice, smoothed);
+        const Detection& segmented = smoothed ? *smoothed : input;
+        for (int round = 0; round < options_.max_harm_rounds && moves.moved_count > 0; ++round) {
+            ++report_.move_rounds;
+            const Mesh moved = moved_mesh(mesh, moves);
+            Detection detection = detect_bands_after_moves(moved, segmented, options_);
+            add_times(detection.stage_time);
+            record(detection);
+            if (options_.keep_segmentation) keep(detection, duplicates);
+            detection.edges = {};
+            detection.features = {};
+            BandRestoration restored = restore_bands(detection.surface(moved), detection.bands,
+                                                     detection.feature_normals, options_);
+            HarmReport harm;
+            StageClock(report_.stage_time, options_.stop).run(Stage::HarmCheck, [&] {
+                harm = check_harm(surface, moves_as_split(mesh, moves, restored.output),
+                                  options_.harm);
+            });
+            if (harm.is_harmless()) {
+                take(std::move(restored));
+                report_.output_unchanged = false;  // the moves changed it, points or not
+                report_.moved_vertices = moves.moved_count;
+                report_.largest_move = moves.largest_move;
+                return;
+            }
+            VertexMoves fewer = without_moves_of(mesh, moves, harm.harmful_faces);
+            if (fewer.moved_count == moves.moved_count) break;  // harm no move explains
+            report_.moves_undone += moves.moved_count - fewer.moved_count;
+            moves = std::move(fewer);
+        }
+        report_.moves_undone += moves.moved_count;
+        restore_detected(mesh, input, duplicates);
+    }
+
     void add_times(const std::array<std::chrono::nanoseconds, kStageCount>& times) {
         for (std::size_t s = 0; s < kStageCount; ++s) report_.stage_time[s] += times[s];
     }

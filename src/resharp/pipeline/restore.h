@@ -74,6 +74,14 @@ struct Detection {
 ///         out of range.
 Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const RestoreOptions& options);
 
+/// detect_bands() on `mesh`, whose vertices moved from those of the mesh `before` was found on
+/// but whose faces are the same (near-surface restoration): the segmentations carried over (a
+/// patch is a set of faces; moving vertices within their cells keeps them), the normals,
+/// classification and feature normals made anew on `mesh`.
+/// \throws as detect_bands().
+Detection detect_bands_after_moves(const Mesh& mesh, const Detection& before,
+                                   const RestoreOptions& options);
+
 /// The second half of restore(): points placed on the bands (eq. 5.2-5.5), then rounds of
 /// guard, split and harm check; each round withdraws the points of the faces whose pieces did
 /// harm, until a round finds none (at most options.max_harm_rounds rounds; each round but the

@@ -121,19 +121,20 @@ struct Scratch {
 /// from 0 in output order.
 class SplitFaces {
 public:
-    /// Takes the split (source faces ascending) and the input's face count.
-    SplitFaces(const SplitMesh& output, std::size_t input_faces) : number_(input_faces, kNoIndex) {
+    /// Takes the split (source faces ascending) and the input mesh.
+    SplitFaces(const SplitMesh& output, const Mesh& input) : number_(input.face_count(), kNoIndex) {
         const Index* source = output.source_face.data();
         const Index count = static_cast<Index>(output.source_face.size());
         face_.reserve(output.split_faces);
         first_output_.reserve(output.split_faces);
         first_piece_.reserve(output.split_faces + 1);
         // A split face's pieces are the runs of one source face; a run starts where the next
-        // output face has the same source.
-        for (Index o = 0; o + 1 < count; ++o) {
-            if (source[o + 1] != source[o]) continue;
-            Index end = o + 2;
+        // output face has the same source. A run of one face is a split face too where its
+        // corners are not the input face's: the face moved (moved vertices come as new ones).
+        for (Index o = 0; o < count; ++o) {
+            Index end = o + 1;
             while (end < count && source[end] == source[o]) ++end;
+            if (end == o + 1 && output.mesh.triangles[o] == input.triangles[source[o]]) continue;
             number_[source[o]] = static_cast<Index>(face_.size());
             face_.push_back(source[o]);
             first_output_.push_back(o);
@@ -172,7 +173,7 @@ public:
           min_fold_cosine_(std::cos(options.fold_angle_deg * std::numbers::pi / 180.0)),
           half_fold_cosine_(std::cos(options.fold_angle_deg * std::numbers::pi / 360.0)),
           check_crossings_(options.check_crossings),
-          split_(output, input.mesh.face_count()),
+          split_(output, input.mesh),
           piece_normal_(split_.piece_count()),
           split_box_(split_.size()),
           blamed_(split_.size(), 0) {

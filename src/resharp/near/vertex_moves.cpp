@@ -1,0 +1,336 @@
+#include "resharp/near/vertex_moves.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "resharp/core/errors.h"
+#include "resharp/surfaces/plane_fit.h"
+
+namespace resharp {
+namespace {
+
+/// A vertex takes part in at most this many patches' fits (a corner joins three).
+constexpr std::size_t kMaxSides = 4;
+/// At most this many vertices are gathered around a vertex, nearest rings first.
+constexpr std::size_t kMaxGathered = 64;
+
+/// One side of a vertex: a patch and the plane fitted to its vertices around the vertex.
+struct Side {
+    Index patch = kNoIndex;
+    PlaneFit fit;
+};
+
+struct Scratch {
+    std::vector<Index> reached;  ///< the vertices within the rings, nearest rings first
+    std::vector<Vec3> points;
+    /// Per vertex (#V): the vertex whose rings last reached it. Each vertex is gathered around
+    /// once, so its own index marks "reached" without clearing between vertices.
+    std::vector<Index> reached_from;
+};
+
+/// Collects into scratch.reached v and the vertices within `rings` rings of it, ring by ring,
+/// at most kMaxGathered. Bound: rings * kMaxGathered ring walks.
+void gather_rings(const Mesh& mesh, const Connectivity& connectivity, Index v, int rings,
+                  Scratch& scratch) {
+    std::vector<Index>& reached = scratch.reached;
+    if (scratch.reached_from.size() != mesh.vertex_count())
+        scratch.reached_from.assign(mesh.vertex_count(), kNoIndex);
+    reached.assign(1, v);
+    scratch.reached_from[v] = v;
+    std::size_t ring_begin = 0;
+    for (int ring = 0; ring < rings && reached.size() < kMaxGathered; ++ring) {
+        const std::size_t ring_end = reached.size();
+        for (std::size_t i = ring_begin; i < ring_end; ++i) {
+            for_each_ring_vertex(mesh, connectivity, reached[i], [&](Index j) {
+                if (reached.size() < kMaxGathered && scratch.reached_from[j] != v) {
+                    scratch.reached_from[j] = v;
+                    reached.push_back(j);
+                }
+            });
+        }
+        ring_begin = ring_end;
+    }
+}
+
+class MovePlanner {
+public:
+    MovePlanner(const InputSurface& current, const std::vector<Vec3>& input,
+                const std::vector<Index>& vertex_patch, const BandClassification& bands,
+                const MoveRule& rule, const VertexMoveOptions& options)
+        : current_(current),
+          input_(input),
+          vertex_patch_(vertex_patch),
+          rule_(rule),
+          options_(options),
+          max_scatter_(rule.grid.pitch * (rule.placement == VertexPlacement::Midpoint
+                                              ? options.max_scatter_midpoint
+                                              : options.max_scatter_near)),
+          in_band_(current.mesh.vertex_count(), 0) {
+        if (rule.scope != FitScope::Patches) return;
+        for (Index f = 0; f < current.mesh.face_count(); ++f) {
+            if (bands.face_role[f] == BandRole::None) continue;
+            for (Index v : current.mesh.triangles[f]) in_band_[v] = 1;
+        }
+    }
+
+    /// Where v goes, or none if it stays.
+    std::optional<Vec3> target(Index v, Scratch& scratch) const {
+        if (rule_.scope == FitScope::Patches && !may_move(v)) return std::nullopt;
+        gather_rings(current_.mesh, current_.connectivity, v, options_.fit_rings, scratch);
+        std::array<Side, kMaxSides> sides;
+        const std::size_t count = rule_.scope == FitScope::Patches
+                                      ? patch_sides(v, scratch, sides)
+                                      : neighbourhood_side(scratch, sides);
+        if (count == 0) return std::nullopt;
+        return nearest_valid_point(v, std::span(sides.data(), count));
+    }
+
+private:
+    /// Whether v has a patch and is one to move: near meshes move band vertices only.
+    bool may_move(Index v) const {
+        return vertex_patch_[v] != kNoIndex &&
+               (in_band_[v] || rule_.placement == VertexPlacement::Midpoint);
+    }
+
+    /// The sides of v's patches: its own first; for a band vertex the others around it too, and
+    /// then only if its own and another have a plane (else it cannot tell where it belongs).
+    std::size_t patch_sides(Index v, Scratch& scratch, std::array<Side, kMaxSides>& sides) const {
+        std::array<Index, kMaxSides> patches{};
+        const std::size_t patch_count = patches_at(v, patches);
+        std::size_t count = 0;
+        for (std::size_t i = 0; i < patch_count; ++i) {
+            if (auto fit = fit_side(patches[i], scratch)) sides[count++] = {patches[i], *fit};
+        }
+        if (count == 0 || sides[0].patch != vertex_patch_[v]) return 0;
+        if (in_band_[v] && count < 2) return 0;
+        return count;
+    }
+
+    /// One side: the plane of every gathered vertex, where they scatter about it as one face.
+    std::size_t neighbourhood_side(Scratch& scratch, std::array<Side, kMaxSides>& sides) const {
+        scratch.points.clear();
+        Vec3 facing = Vec3::Zero();
+        for (Index j : scratch.reached) {
+            scratch.points.push_back(current_.mesh.positions[j]);
+            facing += current_.normals.vertex[j];
+        }
+        const std::optional<PlaneFit> fit = trusted_fit(scratch.points, facing);
+        if (!fit) return 0;
+        sides[0] = {kNoIndex, *fit};
+        return 1;
+    }
+
+    /// v's own patch first, then (for a band vertex) the other patches of its ring's vertices,
+    /// in the order met; at most kMaxSides.
+    std::size_t patches_at(Index v, std::array<Index, kMaxSides>& patches) const {
+        std::size_t count = 0;
+        patches[count++] = vertex_patch_[v];
+        if (!in_band_[v]) return count;
+        for_each_ring_vertex(current_.mesh, current_.connectivity, v, [&](Index j) {
+            const Index p = vertex_patch_[j];
+            if (p == kNoIndex || count == kMaxSides) return;
+            if (std::find(patches.begin(), patches.begin() + count, p) == patches.begin() + count)
+                patches[count++] = p;
+        });
+        return count;
+    }
+
+    /// The plane of `patch` through its gathered vertices. Near: only vertices off the bands,
+    /// which lie on their surface; band vertices are what is to be corrected.
+    std::optional<PlaneFit> fit_side(Index patch, Scratch& scratch) const {
+        scratch.points.clear();
+        Vec3 facing = Vec3::Zero();
+        for (Index j : scratch.reached) {
+            if (vertex_patch_[j] != patch) continue;
+            if (rule_.placement == VertexPlacement::Near && in_band_[j]) continue;
+            scratch.points.push_back(current_.mesh.positions[j]);
+            facing += current_.normals.vertex[j];
+        }
+        return trusted_fit(scratch.points, facing);
+    }
+
+    std::optional<PlaneFit> trusted_fit(std::span<const Vec3> points, const Vec3& facing) const {
+        if (points.size() < static_cast<std::size_t>(options_.min_fit_points)) return std::nullopt;
+        std::optional<PlaneFit> fit = fit_plane(points, facing);
+        if (!fit || fit->rms_distance > max_scatter_) return std::nullopt;
+        return fit;
+    }
+
+    /// Whether x lies on the part of side a's plane that bounds the solid next to side b: behind
+    /// b's plane where the edge between them is convex (a's vertices lie behind b's plane), in
+    /// front of it where it is concave.
+    static bool bounds_solid(const Vec3& x, const Side& a, const Side& b, double tolerance) {
+        const bool convex = b.fit.plane.signed_distance(a.fit.centroid) < 0.0;
+        const double d = b.fit.plane.signed_distance(x);
+        return convex ? d <= tolerance : d >= -tolerance;
+    }
+
+    /// The candidate point on side a's plane for v: the foot of the perpendicular from its
+    /// current place (near), or where its input grid edge meets the plane (midpoint). None if
+    /// the edge runs along the plane or v's input place is on no grid edge.
+    std::optional<Vec3> point_on(Index v, const Side& a) const {
+        const Vec3& x = current_.mesh.positions[v];
+        if (rule_.placement != VertexPlacement::Midpoint) return a.fit.plane.projection(x);
+        const int axis = grid_edge_axis(input_[v]);
+        if (axis < 0) return std::nullopt;
+        const double along = a.fit.plane.normal[axis];
+        if (std::abs(along) < 0.1) return std::nullopt;  // within 6 degrees of the plane
+        Vec3 y = x;
+        y[axis] -= a.fit.plane.signed_distance(x) / along;
+        return y;
+    }
+
+    /// The axis of the grid edge x lies on: its one coordinate off the grid lines; -1 if x is not
+    /// on a grid edge.
+    int grid_edge_axis(const Vec3& x) const {
+        int axis = -1;
+        for (int a = 0; a < 3; ++a) {
+            const double u = (x[a] - rule_.grid.origin[a]) / rule_.grid.pitch;
+            if (std::abs(u - std::round(u)) > 1e-4) {
+                if (axis >= 0) return -1;
+                axis = a;
+            }
+        }
+        return axis;
+    }
+
+    /// Whether y is a place the mesher could have meant for input place x: within x's cell
+    /// (near), within x's grid edge (midpoint: the move runs along it). Cells are closed, a
+    /// thousandth of a pitch wider.
+    bool within_reach(const Vec3& x, const Vec3& y) const {
+        const double slack = 1e-3;
+        for (int a = 0; a < 3; ++a) {
+            const double cell = std::floor((x[a] - rule_.grid.origin[a]) / rule_.grid.pitch);
+            const double u = (y[a] - rule_.grid.origin[a]) / rule_.grid.pitch - cell;
+            if (u < -slack || u > 1.0 + slack) return false;
+        }
+        return true;
+    }
+
+    /// The candidate nearest v's current place that is within reach of its input place and
+    /// bounds the solid next to every other side.
+    std::optional<Vec3> nearest_valid_point(Index v, std::span<const Side> sides) const {
+        const Vec3& x = current_.mesh.positions[v];
+        const double tolerance = 1e-3 * rule_.grid.pitch;
+        std::optional<Vec3> best;
+        for (const Side& a : sides) {
+            const std::optional<Vec3> y = point_on(v, a);
+            if (!y || !within_reach(input_[v], *y)) continue;
+            const bool valid = std::all_of(sides.begin(), sides.end(), [&](const Side& b) {
+                return &b == &a || bounds_solid(*y, a, b, tolerance);
+            });
+            if (valid && (!best || (*y - x).squaredNorm() < (*best - x).squaredNorm())) best = y;
+        }
+        return best;
+    }
+
+    const InputSurface& current_;
+    const std::vector<Vec3>& input_;
+    const std::vector<Index>& vertex_patch_;
+    MoveRule rule_;
+    VertexMoveOptions options_;
+    double max_scatter_;
+    std::vector<std::uint8_t> in_band_;  ///< per vertex: a corner of an edge or corner triangle
+};
+
+void validate(const Grid& grid, const VertexMoveOptions& options) {
+    if (!(grid.pitch > 0.0) || !std::isfinite(grid.pitch))
+        throw InvalidInput("vertex moves: the grid pitch must be positive");
+    if (options.fit_rings < 1 || options.fit_rings > 8 || options.min_fit_points < 3 ||
+        !(options.max_scatter_near >= 0.0) || !(options.max_scatter_midpoint >= 0.0))
+        throw InvalidInput(
+            "vertex moves: fit rings in [1, 8], at least 3 fit points, "
+            "scatter limits not negative");
+}
+
+/// Sets moved, moved_count and largest_move from the positions against the input's.
+void count(const std::vector<Vec3>& input, VertexMoves& moves) {
+    moves.moved.assign(input.size(), 0);
+    moves.moved_count = 0;
+    moves.largest_move = 0.0;
+    for (std::size_t v = 0; v < input.size(); ++v) {
+        if (moves.position[v] == input[v]) continue;
+        moves.moved[v] = 1;
+        ++moves.moved_count;
+        moves.largest_move = std::max(moves.largest_move, (moves.position[v] - input[v]).norm());
+    }
+}
+
+}  // namespace
+
+VertexMoves plan_vertex_moves(const InputSurface& current, const std::vector<Vec3>& input,
+                              const std::vector<Index>& vertex_patch,
+                              const BandClassification& bands, const MoveRule& rule,
+                              const VertexMoveOptions& options) {
+    const Mesh& mesh = current.mesh;
+    VertexMoves moves{mesh.positions, std::vector<std::uint8_t>(mesh.vertex_count(), 0), 0, 0.0};
+    if (input.size() != mesh.vertex_count())
+        throw InvalidInput("vertex moves: one input position per vertex is needed");
+    if (rule.placement != VertexPlacement::Exact) {
+        validate(rule.grid, options);
+        const MovePlanner planner(current, input, vertex_patch, bands, rule, options);
+        tbb::enumerable_thread_specific<Scratch> scratches;
+        tbb::parallel_for(
+            tbb::blocked_range<Index>(0, static_cast<Index>(mesh.vertex_count()), 2048),
+            [&](const auto& range) {
+                Scratch& scratch = scratches.local();
+                for (Index v = range.begin(); v != range.end(); ++v) {
+                    if (auto y = planner.target(v, scratch)) moves.position[v] = *y;
+                }
+            });
+    }
+    count(input, moves);
+    return moves;
+}
+
+Mesh moved_mesh(const Mesh& mesh, const VertexMoves& moves) {
+    Mesh moved;
+    moved.positions = moves.position;
+    moved.triangles = mesh.triangles;
+    return moved;
+}
+
+VertexMoves without_moves_of(const Mesh& mesh, const VertexMoves& moves,
+                             const std::vector<Index>& faces) {
+    VertexMoves fewer = moves;
+    for (Index f : faces) {
+        for (Index v : mesh.triangles[f]) {
+            fewer.moved[v] = 0;
+            fewer.position[v] = mesh.positions[v];
+        }
+    }
+    count(mesh.positions, fewer);
+    return fewer;
+}
+
+SplitMesh moves_as_split(const Mesh& input, const VertexMoves& moves,
+                         const SplitMesh& split_of_moved) {
+    const Index vertices = static_cast<Index>(input.vertex_count());
+    SplitMesh out;
+    out.mesh.positions = input.positions;
+    out.mesh.positions.reserve(split_of_moved.mesh.vertex_count() + moves.moved_count);
+    std::vector<Index> renumbered(split_of_moved.mesh.vertex_count());
+    for (Index v = 0; v < vertices; ++v) {
+        renumbered[v] = v;
+        if (!moves.moved[v]) continue;
+        renumbered[v] = static_cast<Index>(out.mesh.positions.size());
+        out.mesh.positions.push_back(moves.position[v]);
+    }
+    for (Index v = vertices; v < split_of_moved.mesh.vertex_count(); ++v) {
+        renumbered[v] = static_cast<Index>(out.mesh.positions.size());
+        out.mesh.positions.push_back(split_of_moved.mesh.positions[v]);
+    }
+    out.mesh.triangles.reserve(split_of_moved.mesh.face_count());
+    for (const Triangle& t : split_of_moved.mesh.triangles)
+        out.mesh.triangles.push_back({renumbered[t[0]], renumbered[t[1]], renumbered[t[2]]});
+    out.source_face = split_of_moved.source_face;
+    out.split_faces = split_of_moved.split_faces;
+    return out;
+}
+
+}  // namespace resharp

@@ -1,0 +1,93 @@
+#pragma once
+/// Near-surface restoration, its first half (issue 14): where the mesher left the vertices near
+/// the surface rather than on it, each vertex is moved onto the surface of its feature patch as
+/// the patch's own vertices around it show that surface (a fitted plane), and only within what
+/// its mesher could have got wrong: a midpoint vertex along its own grid edge (the true crossing
+/// lies on that edge), a cell-mean vertex within its own cell. A band vertex goes onto the
+/// nearest of the sides around it, where that side is part of the solid's boundary; the exact
+/// method of the paper then restores the band between the sides, its vertices now on them.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "resharp/mesh/connectivity.h"
+#include "resharp/mesh/geometry.h"
+#include "resharp/mesh/mesh.h"
+#include "resharp/near/vertex_placement.h"
+#include "resharp/restoration/band_classification.h"
+#include "resharp/restoration/input_surface.h"
+#include "resharp/restoration/split.h"
+
+namespace resharp {
+
+struct VertexMoveOptions {
+    /// Rings of neighbours searched for a patch's vertices to fit its plane to (at most 64).
+    int fit_rings = 3;
+    /// A patch with fewer vertices than this in reach gets no plane there.
+    int min_fit_points = 6;
+    /// A fit whose points scatter about it by more (root mean square, in grid pitches) is not
+    /// taken for a plane: a curved patch, or one that took in part of another. Cell means of
+    /// crossings on a plane lie on it; midpoints scatter along their grid edges by up to half a
+    /// pitch (rms pitch / sqrt(12) where the plane runs across the edges).
+    double max_scatter_near = 0.1;
+    double max_scatter_midpoint = 0.35;
+};
+
+struct VertexMoves {
+    std::vector<Vec3> position;       ///< #V: where each vertex goes; its input position if not
+    std::vector<std::uint8_t> moved;  ///< #V: 1 where position differs from the input's
+    std::size_t moved_count = 0;
+    double largest_move = 0.0;  ///< mm, from the input position
+};
+
+/// Where the planes a vertex moves onto come from.
+enum class FitScope : std::uint8_t {
+    /// The feature patches around the vertex, a plane each: its own, and for a band vertex its
+    /// neighbours' (meshes whose segmentation found their faces).
+    Patches,
+    /// Every vertex within reach, one plane, taken only where they scatter about it as one
+    /// face's would (midpoint meshes, whose stair-stepped slanted faces segmentation breaks into
+    /// a patch per tread).
+    Neighbourhood,
+};
+
+/// How vertices may move.
+struct MoveRule {
+    VertexPlacement placement = VertexPlacement::Exact;
+    Grid grid;  ///< the grid the mesher placed the vertices on
+    FitScope scope = FitScope::Patches;
+};
+
+/// Takes the mesh as it stands (`current`: positions, adjacency, normals), the input positions
+/// it came from (#V: what each vertex may move away from, by the rule), the feature patch of
+/// every vertex (#V, kNoIndex for none; Patches only) and the bands found (Patches only).
+/// Near: band vertices move by the shortest way onto a side that bounds the solid there, within
+/// their input cell (the others lie on their surface already, up to its curvature). Midpoint:
+/// every vertex with a plane around it moves along its input grid edge onto it, within the edge.
+/// Exact: nothing moves. A vertex without a plane keeps its current position. Each vertex is
+/// decided alone, from the inputs only: the same on any number of threads. The result counts
+/// moves from the input positions.
+/// \throws InvalidInput if the grid's pitch is not positive or an option is out of range.
+VertexMoves plan_vertex_moves(const InputSurface& current, const std::vector<Vec3>& input,
+                              const std::vector<Index>& vertex_patch,
+                              const BandClassification& bands, const MoveRule& rule,
+                              const VertexMoveOptions& options = {});
+
+/// The mesh with every vertex at its planned position; faces as they were.
+Mesh moved_mesh(const Mesh& mesh, const VertexMoves& moves);
+
+/// `moves` less the moves of the vertices of `faces` (input face indices, as the harm check
+/// names them); its counts recounted.
+VertexMoves without_moves_of(const Mesh& mesh, const VertexMoves& moves,
+                             const std::vector<Index>& faces);
+
+/// The split of the moved mesh as a split of the input itself: the input's vertices first,
+/// unchanged, then the moved vertices' new places (in vertex order), then the split's new
+/// points; faces as in `split_of_moved`, their corners renumbered. The harm check then holds
+/// every moved face, split or not, against the input surface it replaces. Its
+/// point_of_new_vertex is left empty (the check does not read it).
+SplitMesh moves_as_split(const Mesh& input, const VertexMoves& moves,
+                         const SplitMesh& split_of_moved);
+
+}  // namespace resharp

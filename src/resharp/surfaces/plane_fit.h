@@ -1,0 +1,34 @@
+#pragma once
+/// A plane fitted to points by total least squares: through their centroid, normal along the
+/// covariance's smallest eigenvector (the line of Pearson 1901, one dimension up). Near-surface
+/// restoration (near/vertex_moves.h) fits one to the vertices of a feature patch around a
+/// vertex, where the mesher left them scattered about the true face.
+
+#include <optional>
+#include <span>
+
+#include "resharp/core/types.h"
+
+namespace resharp {
+
+/// The points x with normal . x = offset; normal unit.
+struct Plane {
+    Vec3 normal = Vec3::UnitZ();
+    double offset = 0.0;
+
+    double signed_distance(const Vec3& x) const { return normal.dot(x) - offset; }
+    Vec3 projection(const Vec3& x) const { return x - signed_distance(x) * normal; }
+};
+
+struct PlaneFit {
+    Plane plane;
+    Vec3 centroid = Vec3::Zero();
+    double rms_distance = 0.0;  ///< root mean square distance of the points to the plane
+};
+
+/// Takes three points or more and a direction the normal should face (its sign only: the
+/// normal ends up within 90 degrees of it). None when the points do not span a plane (fewer
+/// than three, or all on one line within rounding).
+std::optional<PlaneFit> fit_plane(std::span<const Vec3> points, const Vec3& facing);
+
+}  // namespace resharp

@@ -1,0 +1,193 @@
+// Vertex moves of near-surface restoration (near/vertex_moves.h) on small parts the simulator
+// meshes as surface nets and as grid-edge midpoints would.
+
+#include "resharp/near/vertex_moves.h"
+
+#include <gtest/gtest.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "resharp/core/errors.h"
+#include "resharp/pipeline/restore.h"
+#include "support/small_parts.h"
+
+namespace resharp {
+namespace {
+
+using test::SmallPart;
+
+/// The distance from p to the exact surface along the line through p parallel to `axis`: the
+/// true distance where the nearest surface is a plane across that axis, more elsewhere.
+double distance_along(const sim::CsgSolid& solid, const Vec3& p, int axis) {
+    std::vector<sim::Interval> intervals;
+    solid.intersect_line(p, Vec3::Unit(axis), intervals);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const sim::Interval& i : intervals) {
+        nearest = std::min({nearest, std::abs(i.enter.t), std::abs(i.exit.t)});
+    }
+    return nearest;
+}
+
+double distance_along_any_axis(const sim::CsgSolid& solid, const Vec3& p) {
+    return std::min(
+        {distance_along(solid, p, 0), distance_along(solid, p, 1), distance_along(solid, p, 2)});
+}
+
+struct Planned {
+    Mesh mesh;
+    Grid grid;
+    VertexMoves moves;
+};
+
+Planned plan(SmallPart part, sim::Mesher mesher, VertexPlacement placement,
+             FitScope scope = FitScope::Patches) {
+    Planned p;
+    p.mesh = test::small_part(part, 0.5, mesher);
+    const sim::GridSpec spec = test::small_part_grid(part, 0.5);
+    p.grid = {spec.pitch, spec.origin};
+    const Detection d = detect_bands(p.mesh, build_connectivity(p.mesh), {});
+    p.moves = plan_vertex_moves(d.surface(p.mesh), p.mesh.positions, d.features.vertex_patch,
+                                d.bands, {placement, p.grid, scope});
+    return p;
+}
+
+/// Whether y lies in the closed grid cell of x (a thousandth of a pitch of slack).
+bool in_same_cell(const Grid& grid, const Vec3& x, const Vec3& y) {
+    for (int a = 0; a < 3; ++a) {
+        const double cell = std::floor((x[a] - grid.origin[a]) / grid.pitch);
+        const double u = (y[a] - grid.origin[a]) / grid.pitch - cell;
+        if (u < -1e-3 || u > 1.0 + 1e-3) return false;
+    }
+    return true;
+}
+
+TEST(VertexMoves, SurfaceNetsBandVerticesMoveOntoThePlanesWithinTheirCells) {
+    const Planned p =
+        plan(SmallPart::PocketedBlock, sim::Mesher::SurfaceNets, VertexPlacement::Near);
+    const sim::CsgSolid solid = test::small_part_solid(SmallPart::PocketedBlock);
+    ASSERT_GT(p.moves.moved_count, 50u);
+    std::size_t on_surface = 0;
+    double before = 0.0, after = 0.0;
+    for (Index v = 0; v < p.mesh.vertex_count(); ++v) {
+        if (!p.moves.moved[v]) {
+            EXPECT_EQ(p.moves.position[v], p.mesh.positions[v]);
+            continue;
+        }
+        EXPECT_TRUE(in_same_cell(p.grid, p.mesh.positions[v], p.moves.position[v])) << v;
+        const double d = distance_along_any_axis(solid, p.moves.position[v]);
+        on_surface += d < 1e-9;
+        before += distance_along_any_axis(solid, p.mesh.positions[v]);
+        after += d;
+    }
+    // The block's faces are planes across the axes (the hole's wall is not, and the fit there
+    // is only near it): most moved vertices land on their face exactly.
+    EXPECT_GT(on_surface, 8 * p.moves.moved_count / 10);
+    EXPECT_LT(after, 0.25 * before);
+    EXPECT_LE(p.moves.largest_move, std::sqrt(3.0) * p.grid.pitch);
+}
+
+TEST(VertexMoves, MidpointVerticesMoveAlongTheirGridEdgeOnly) {
+    const Planned p = plan(SmallPart::TiltedWedge, sim::Mesher::Midpoint, VertexPlacement::Midpoint,
+                           FitScope::Neighbourhood);
+    const sim::CsgSolid solid = test::small_part_solid(SmallPart::TiltedWedge);
+    ASSERT_GT(p.moves.moved_count, p.mesh.vertex_count() / 4);
+    double before = 0.0, after = 0.0;
+    for (Index v = 0; v < p.mesh.vertex_count(); ++v) {
+        if (!p.moves.moved[v]) continue;
+        const Vec3& x = p.mesh.positions[v];
+        const Vec3& y = p.moves.position[v];
+        int moved_axes = 0, axis = 0;
+        for (int a = 0; a < 3; ++a) {
+            if (x[a] != y[a]) {
+                ++moved_axes;
+                axis = a;
+            }
+        }
+        ASSERT_EQ(moved_axes, 1) << v;
+        EXPECT_TRUE(in_same_cell(p.grid, x, y)) << v;
+        // Along its own edge the true crossing is the one the mesher rounded to the midpoint.
+        before += distance_along(solid, x, axis);
+        after += distance_along(solid, y, axis);
+    }
+    EXPECT_LT(after, 0.5 * before) << before << " " << after;
+}
+
+TEST(VertexMoves, ExactPlacementMovesNothing) {
+    const Planned p =
+        plan(SmallPart::PocketedBlock, sim::Mesher::MarchingCubes, VertexPlacement::Exact);
+    EXPECT_EQ(p.moves.moved_count, 0u);
+    EXPECT_EQ(p.moves.position, p.mesh.positions);
+}
+
+TEST(VertexMoves, TheSameOnAnyThreadCount) {
+    const Mesh mesh = test::small_part(SmallPart::BossedPlate, 0.5, sim::Mesher::SurfaceNets);
+    const sim::GridSpec spec = test::small_part_grid(SmallPart::BossedPlate, 0.5);
+    const Detection d = detect_bands(mesh, build_connectivity(mesh), {});
+    auto moves = [&] {
+        return plan_vertex_moves(d.surface(mesh), mesh.positions, d.features.vertex_patch, d.bands,
+                                 {VertexPlacement::Near, {spec.pitch, spec.origin}, {}});
+    };
+    const VertexMoves all = moves();
+    tbb::task_arena one(1);
+    const VertexMoves single = one.execute(moves);
+    EXPECT_EQ(all.position, single.position);
+}
+
+TEST(VertexMoves, WithoutMovesOfFacesGivesThoseVerticesBack) {
+    const Planned p =
+        plan(SmallPart::PocketedBlock, sim::Mesher::SurfaceNets, VertexPlacement::Near);
+    std::vector<Index> faces;
+    for (Index f = 0; f < p.mesh.face_count() && faces.size() < 5; ++f) {
+        const Triangle& t = p.mesh.triangles[f];
+        if (p.moves.moved[t[0]] || p.moves.moved[t[1]] || p.moves.moved[t[2]]) faces.push_back(f);
+    }
+    ASSERT_EQ(faces.size(), 5u);
+    const VertexMoves fewer = without_moves_of(p.mesh, p.moves, faces);
+    EXPECT_LT(fewer.moved_count, p.moves.moved_count);
+    for (Index f : faces) {
+        for (Index v : p.mesh.triangles[f]) {
+            EXPECT_FALSE(fewer.moved[v]);
+            EXPECT_EQ(fewer.position[v], p.mesh.positions[v]);
+        }
+    }
+}
+
+TEST(VertexMoves, AsSplitOfTheInputMovedVerticesComeAsNewOnes) {
+    const Planned p =
+        plan(SmallPart::PocketedBlock, sim::Mesher::SurfaceNets, VertexPlacement::Near);
+    const Mesh moved = moved_mesh(p.mesh, p.moves);
+    SplitMesh same;
+    same.mesh = moved;
+    for (Index f = 0; f < moved.face_count(); ++f) same.source_face.push_back(f);
+    const SplitMesh relative = moves_as_split(p.mesh, p.moves, same);
+    ASSERT_EQ(relative.mesh.vertex_count(), p.mesh.vertex_count() + p.moves.moved_count);
+    EXPECT_TRUE(std::equal(p.mesh.positions.begin(), p.mesh.positions.end(),
+                           relative.mesh.positions.begin()));
+    for (Index f = 0; f < moved.face_count(); ++f) {
+        for (int k = 0; k < 3; ++k) {
+            const Index v = moved.triangles[f][k];
+            EXPECT_EQ(relative.mesh.positions[relative.mesh.triangles[f][k]], moved.positions[v]);
+            EXPECT_EQ(relative.mesh.triangles[f][k] >= p.mesh.vertex_count(), p.moves.moved[v]);
+        }
+    }
+}
+
+TEST(VertexMoves, RefusesABadGrid) {
+    const Mesh mesh = test::small_part(SmallPart::PocketedBlock);
+    const Detection d = detect_bands(mesh, build_connectivity(mesh), {});
+    const MoveRule no_pitch{VertexPlacement::Near, {0.0, Vec3::Zero()}, FitScope::Patches};
+    EXPECT_THROW(plan_vertex_moves(d.surface(mesh), mesh.positions, d.features.vertex_patch,
+                                   d.bands, no_pitch),
+                 InvalidInput);
+    const std::vector<Vec3> too_few(3, Vec3::Zero());
+    EXPECT_THROW(plan_vertex_moves(d.surface(mesh), too_few, d.features.vertex_patch, d.bands,
+                                   {VertexPlacement::Near, {0.5, Vec3::Zero()}, {}}),
+                 InvalidInput);
+}
+
+}  // namespace
+}  // namespace resharp

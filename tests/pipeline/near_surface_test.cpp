@@ -1,0 +1,113 @@
+// restore() on meshes whose vertices lie near the surface (issue 14): surface nets and grid-edge
+// midpoints of small parts, with the placement and the grid named.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "resharp/pipeline/restore.h"
+#include "support/invariants.h"
+#include "support/small_parts.h"
+
+namespace resharp {
+namespace {
+
+using test::SmallPart;
+
+struct Case {
+    SmallPart part;
+    sim::Mesher mesher;
+    VertexMode mode;
+};
+
+RestoreOptions near_options(const Case& c) {
+    RestoreOptions o;
+    const sim::GridSpec spec = test::small_part_grid(c.part, 0.5);
+    o.vertices.mode = c.mode;
+    o.vertices.grid = {spec.pitch, spec.origin};
+    o.vertices.grid_origin_given = true;
+    return o;
+}
+
+/// The distance from p to the part's surface along the nearest of the three axis lines
+/// through p (exact where that surface is a plane across the axis).
+double axis_distance(const sim::CsgSolid& solid, const Vec3& p) {
+    double nearest = std::numeric_limits<double>::infinity();
+    std::vector<sim::Interval> intervals;
+    for (int axis = 0; axis < 3; ++axis) {
+        intervals.clear();
+        solid.intersect_line(p, Vec3::Unit(axis), intervals);
+        for (const sim::Interval& i : intervals)
+            nearest = std::min({nearest, std::abs(i.enter.t), std::abs(i.exit.t)});
+    }
+    return nearest;
+}
+
+class NearSurface : public ::testing::TestWithParam<Case> {};
+
+TEST_P(NearSurface, DoesNoHarmAndMovesWithinTheCells) {
+    const Case c = GetParam();
+    const Mesh input = test::small_part(c.part, 0.5, c.mesher);
+    const RestoreOptions options = near_options(c);
+    const RestoreResult r = restore(input, options);
+    EXPECT_EQ(r.report.vertex_placement, c.mode == VertexMode::Near ? "near" : "midpoint");
+    EXPECT_FALSE(r.report.placement_measured);
+    EXPECT_DOUBLE_EQ(r.report.grid_pitch, 0.5);
+    EXPECT_GT(r.report.moved_vertices, 0u);
+    EXPECT_LE(r.report.largest_move, std::sqrt(3.0) * 0.5);
+    test::expect_no_harm(input, r, options);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Parts, NearSurface,
+    ::testing::Values(Case{SmallPart::PocketedBlock, sim::Mesher::SurfaceNets, VertexMode::Near},
+                      Case{SmallPart::BossedPlate, sim::Mesher::SurfaceNets, VertexMode::Near},
+                      Case{SmallPart::TiltedWedge, sim::Mesher::SurfaceNets, VertexMode::Near},
+                      Case{SmallPart::PocketedBlock, sim::Mesher::Midpoint, VertexMode::Midpoint},
+                      Case{SmallPart::BossedPlate, sim::Mesher::Midpoint, VertexMode::Midpoint},
+                      Case{SmallPart::TiltedWedge, sim::Mesher::Midpoint, VertexMode::Midpoint}));
+
+/// Where the mesher's error can be told from the mesh: every surface-nets band, and the
+/// stair-stepped slanted faces of midpoints. (A face across a grid axis meshed at midpoints
+/// is flat at the wrong height, with nothing in the mesh to say how wrong.)
+class NearerTheSurface : public ::testing::TestWithParam<Case> {};
+
+TEST_P(NearerTheSurface, ThanTheExactPath) {
+    const Case c = GetParam();
+    const Mesh input = test::small_part(c.part, 0.5, c.mesher);
+    const sim::CsgSolid solid = test::small_part_solid(c.part);
+    RestoreOptions exact = near_options(c);
+    exact.vertices.mode = VertexMode::Exact;
+    const RestoreResult as_exact = restore(input, exact);
+    const RestoreResult as_near = restore(input, near_options(c));
+    // Over the input's vertices, where both outputs have them.
+    double exact_sum = 0.0, near_sum = 0.0;
+    for (std::size_t v = 0; v < input.vertex_count(); ++v) {
+        exact_sum += axis_distance(solid, as_exact.mesh.positions[v]);
+        near_sum += axis_distance(solid, as_near.mesh.positions[v]);
+    }
+    EXPECT_LT(near_sum, 0.8 * exact_sum);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Parts, NearerTheSurface,
+    ::testing::Values(Case{SmallPart::PocketedBlock, sim::Mesher::SurfaceNets, VertexMode::Near},
+                      Case{SmallPart::BossedPlate, sim::Mesher::SurfaceNets, VertexMode::Near},
+                      Case{SmallPart::TiltedWedge, sim::Mesher::SurfaceNets, VertexMode::Near},
+                      Case{SmallPart::TiltedWedge, sim::Mesher::Midpoint, VertexMode::Midpoint}));
+
+TEST(NearSurface, ExactModeMovesNothing) {
+    const Mesh input = test::small_part(SmallPart::PocketedBlock, 0.5, sim::Mesher::SurfaceNets);
+    RestoreOptions o =
+        near_options({SmallPart::PocketedBlock, sim::Mesher::SurfaceNets, VertexMode::Exact});
+    const RestoreResult r = restore(input, o);
+    EXPECT_EQ(r.report.vertex_placement, "exact");
+    EXPECT_EQ(r.report.moved_vertices, 0u);
+    EXPECT_TRUE(
+        std::equal(input.positions.begin(), input.positions.end(), r.mesh.positions.begin()));
+}
+
+}  // namespace
+}  // namespace resharp
