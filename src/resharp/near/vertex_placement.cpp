@@ -596,7 +596,36 @@ std::optional<VertexPlacement> vertex_placement_from_string(std::string_view nam
     return std::nullopt;
 }
 
-PlacementEstimate estimate_vertex_placement(const Mesh& mesh, const std::optional<Grid>& given) {
+namespace {
+
+/// At most about kSampleFaces faces, evenly spaced in face order, with their vertices: how a
+/// mesher placed its vertices shows as well on a few thousand faces as on all, and restore()
+/// asks on every mesh. (The whole mesh where it is smaller.)
+constexpr std::size_t kSampleFaces = 12000;
+
+Mesh sample_of(const Mesh& mesh) {
+    if (mesh.face_count() <= kSampleFaces) return mesh;
+    const std::size_t stride = (mesh.face_count() + kSampleFaces - 1) / kSampleFaces;
+    std::vector<Index> renumbered(mesh.vertex_count(), kNoIndex);
+    Mesh sample;
+    for (std::size_t f = 0; f < mesh.face_count(); f += stride) {
+        Triangle t = mesh.triangles[f];
+        for (Index& v : t) {
+            if (renumbered[v] == kNoIndex) {
+                renumbered[v] = static_cast<Index>(sample.positions.size());
+                sample.positions.push_back(mesh.positions[v]);
+            }
+            v = renumbered[v];
+        }
+        sample.triangles.push_back(t);
+    }
+    return sample;
+}
+
+}  // namespace
+
+PlacementEstimate estimate_vertex_placement(const Mesh& full, const std::optional<Grid>& given) {
+    const Mesh mesh = sample_of(full);
     if (given && (!(given->pitch > 0.0) || !std::isfinite(given->pitch))) {
         throw InvalidInput("grid pitch must be positive and finite");
     }
