@@ -365,20 +365,20 @@ private:
                        const DuplicateFaces& duplicates) {
         Detection detection = detect_bands(mesh, std::move(connectivity), options_);
         add_times(detection.stage_time);
-        restore_detected(mesh, detection, duplicates);
+        take(restore_detected(mesh, detection, duplicates));
     }
 
-    /// Restores the bands `detection` found on `mesh` and takes the result.
-    void restore_detected(const Mesh& mesh, Detection& detection,
-                          const DuplicateFaces& duplicates) {
+    /// Records what `detection` found on `mesh` and restores its bands; the segmentations go
+    /// first (nothing after reads them).
+    BandRestoration restore_detected(const Mesh& mesh, Detection& detection,
+                                     const DuplicateFaces& duplicates) {
         record(detection);
         if (options_.keep_segmentation) keep(detection, duplicates);
         // What the rest does not read goes before the rest allocates (peak memory).
         detection.edges = {};
         detection.features = {};
-        BandRestoration restored = restore_bands(detection.surface(mesh), detection.bands,
-                                                 detection.feature_normals, options_);
-        take(std::move(restored));
+        return restore_bands(detection.surface(mesh), detection.bands, detection.feature_normals,
+                             options_);
     }
 
     void take(BandRestoration restored) {
@@ -442,12 +442,7 @@ private:
             const Mesh moved = moved_mesh(mesh, moves);
             Detection detection = detect_bands_after_moves(moved, segmented, options_);
             add_times(detection.stage_time);
-            record(detection);
-            if (options_.keep_segmentation) keep(detection, duplicates);
-            detection.edges = {};
-            detection.features = {};
-            BandRestoration restored = restore_bands(detection.surface(moved), detection.bands,
-                                                     detection.feature_normals, options_);
+            BandRestoration restored = restore_detected(moved, detection, duplicates);
             HarmReport harm;
             StageClock(report_.stage_time, options_.stop).run(Stage::HarmCheck, [&] {
                 harm = check_harm(surface, moves_as_split(mesh, moves, restored.output),
@@ -466,7 +461,7 @@ private:
             moves = std::move(fewer);
         }
         report_.moves_undone += moves.moved_count;
-        restore_detected(mesh, input, duplicates);
+        take(restore_detected(mesh, input, duplicates));
     }
 
     void add_times(const std::array<std::chrono::nanoseconds, kStageCount>& times) {
