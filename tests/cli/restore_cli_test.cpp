@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -105,6 +106,37 @@ TEST_F(RestoreCli, PaperVariantRunsAndRefusesTheChoicesItSets) {
     EXPECT_EQ(run.exit_code, 1);
     EXPECT_NE(run.stderr_text.find("excludes"), std::string::npos) << run.stderr_text;
     EXPECT_FALSE(fs::exists(dir_ / "both.stl"));
+}
+
+// A surface-nets mesh as a user meets one: measured as near, band vertices moved within their
+// cells, and said so; a bad --grid refused on the command line, nothing written.
+TEST_F(RestoreCli, MeasuresASurfaceNetsMeshAndMovesItsBandVertices) {
+    const std::string job =
+        quoted(fs::path(RESHARP_SOURCE_DIR) / "examples" / "bracket" / "job.json");
+    const CliRun simulated =
+        resharp("simulate " + job + " --mesher surface-nets -o " + path("in.ply") + " -q");
+    ASSERT_EQ(simulated.exit_code, 0) << simulated.stderr_text;
+    const CliRun run =
+        restore(path("in.ply") + " -o " + path("out.ply") + " --report " + path("report.json"));
+    ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+    EXPECT_NE(run.stderr_text.find("vertices near the surface (measured"), std::string::npos)
+        << run.stderr_text;
+    const auto v = nlohmann::json::parse(bytes_of(dir_ / "report.json"))["vertices"];
+    EXPECT_EQ(v["placement"], "near");
+    EXPECT_EQ(v["measured"], true);
+    EXPECT_DOUBLE_EQ(v["grid_pitch"].get<double>(), 0.5);  // the job's pitch
+    EXPECT_GT(v["moved"].get<int>(), 100);
+    EXPECT_LE(v["largest_move"].get<double>(), std::sqrt(3.0) * 0.5);
+
+    const CliRun exact = restore(path("in.ply") + " -q --vertices exact -o " + path("exact.ply") +
+                                 " --report " + path("exact.json"));
+    ASSERT_EQ(exact.exit_code, 0) << exact.stderr_text;
+    EXPECT_EQ(nlohmann::json::parse(bytes_of(dir_ / "exact.json"))["vertices"]["moved"], 0);
+
+    const CliRun bad = restore(path("in.ply") + " --grid 0.5,1 -o " + path("bad.ply"));
+    EXPECT_EQ(bad.exit_code, 1);
+    EXPECT_NE(bad.stderr_text.find("--grid"), std::string::npos) << bad.stderr_text;
+    EXPECT_FALSE(fs::exists(dir_ / "bad.ply"));
 }
 
 TEST_F(RestoreCli, SegmentsMustBePly) {
