@@ -6,7 +6,7 @@ include(CMakePackageConfigHelpers)
 # The interface targets carry no files; they are exported because the static libraries name
 # them (as link-only dependencies, so a sanitized build hands its link flags on).
 set(resharp_installed_targets resharp resharp_warnings resharp_sanitizers)
-set(resharp_installed_headers core mesh curvature segmentation restoration pipeline)
+set(resharp_installed_headers core mesh curvature segmentation restoration surfaces near pipeline)
 if(TARGET resharp_io)
     list(APPEND resharp_installed_targets resharp_io)
     list(APPEND resharp_installed_headers io)
