@@ -270,8 +270,7 @@ void run_evaluate(EvaluateArguments args) {
     // A near-surface restoration moves input vertices (issue 14): the scores that tell the
     // output's new vertices from the input's read the input where it was moved to.
     const Mesh placed = input_as_placed(input, output, h);
-    const bool moved = placed.positions != input.positions;
-    eval::check_output_extends_input(placed, output);
+    const std::size_t moved = moved_count(input, placed);
 
     const eval::SurfaceSamples exact = eval::sample_exact_surface(reference.grid);
     const double sampling_seconds = std::chrono::duration<double>(sampling.elapsed()).count();
@@ -341,9 +340,9 @@ void run_evaluate(EvaluateArguments args) {
     // Moved faces keep their corners' numbers: with moves every output face is judged.
     j["flipped_triangles"] = eval::count_flipped_faces(
         placed, output, oracle, exact,
-        moved ? eval::FlipScope::AllFaces : eval::FlipScope::ChangedFaces);
-    j["flipped_scope"] = moved ? "all faces" : "changed faces";
-    j["moved_input_vertices"] = moved_count(input, placed);
+        moved > 0 ? eval::FlipScope::AllFaces : eval::FlipScope::ChangedFaces);
+    j["flipped_scope"] = moved > 0 ? "all faces" : "changed faces";
+    j["moved_input_vertices"] = moved;
     j["flipped_triangles_input"] =
         eval::count_flipped_faces(input, input, oracle, exact, eval::FlipScope::AllFaces);
     j["self_intersections"] = valid_out.self_intersections;

@@ -249,7 +249,7 @@ void validate(const Grid& grid, const VertexMoveOptions& options) {
 }
 
 /// Sets moved, moved_count and largest_move from the positions against the input's.
-void count(const std::vector<Vec3>& input, VertexMoves& moves) {
+void recount(const std::vector<Vec3>& input, VertexMoves& moves) {
     moves.moved.assign(input.size(), 0);
     moves.moved_count = 0;
     moves.largest_move = 0.0;
@@ -284,7 +284,7 @@ VertexMoves plan_vertex_moves(const InputSurface& current, const std::vector<Vec
                 }
             });
     }
-    count(input, moves);
+    recount(input, moves);
     return moves;
 }
 
@@ -304,7 +304,7 @@ VertexMoves without_moves_of(const Mesh& mesh, const VertexMoves& moves,
             fewer.position[v] = mesh.positions[v];
         }
     }
-    count(mesh.positions, fewer);
+    recount(mesh.positions, fewer);
     return fewer;
 }
 
