@@ -5,9 +5,12 @@
 #include <cfloat>
 #include <cmath>
 #include <complex>
+#include <cstdint>
+#include <cstring>
 #include <numbers>
 #include <span>
 #include <sstream>
+#include <unordered_map>
 #include <vector>
 
 #include "resharp/core/errors.h"
@@ -46,7 +49,6 @@ constexpr int kStarts = 6;                // refinements from pitches each side 
 struct SharedValue {
     double value = 0.0;
     double weight = 0.0;
-    bool operator==(const SharedValue&) const = default;
 };
 using AxisValues = std::array<std::vector<SharedValue>, 3>;
 
@@ -118,12 +120,17 @@ double median_edge_length(const Mesh& mesh) {
     return *middle;
 }
 
+/// e^(2 pi i value / pitch), the term phasor() adds for a value of weight 1.
+std::complex<double> unit_phasor(double value, double pitch) {
+    return std::polar(1.0, 2.0 * std::numbers::pi * value / pitch);
+}
+
 /// Sum of weight * e^(2 pi i value / pitch): its length over the total weight is 1 when every
 /// value lies on one lattice of this pitch, and its angle gives the lattice's phase.
 std::complex<double> phasor(std::span<const SharedValue> values, double pitch) {
     std::complex<double> sum = 0.0;
     for (const SharedValue& s : values) {
-        sum += s.weight * std::polar(1.0, 2.0 * std::numbers::pi * s.value / pitch);
+        sum += s.weight * unit_phasor(s.value, pitch);
     }
     return sum;
 }
@@ -146,39 +153,44 @@ std::vector<double> scan_pitches(double spacing) {
     return pitches;
 }
 
-/// Per axis, the window values last scanned and the lengths of their phasors at the scan's
-/// pitches. The two readings of a mesh (exact and rounded tolerance) often hold the same values
-/// on an axis of their windows; the second takes that axis's lengths from the first (the same
-/// sums, so the same bits) instead of a sine and cosine per value and pitch again.
+/// The scan's pitches, and the unit phasors at each of them of every value scanned so far. The
+/// two readings of a mesh (exact and rounded tolerance) share most of their windows' values, and
+/// a value's terms are the same bits in both: the second reading takes the sine and cosine of
+/// only its new values.
 struct PitchScan {
     std::vector<double> pitches;
-    std::array<std::vector<SharedValue>, 3> values;
-    std::array<std::vector<double>, 3> lengths;  ///< empty: not scanned yet
+    std::unordered_map<std::uint64_t, std::vector<std::complex<double>>> unit_phasors;  // by bits
 };
 
-/// |phasor(near[a], pitch)| at each of the scan's pitches, from `scan` when it holds them.
-const std::vector<double>& phasor_lengths(const AxisValues& near, int a, PitchScan& scan) {
-    if (!scan.lengths[a].empty() && scan.values[a] == near[a]) return scan.lengths[a];
-    scan.values[a] = near[a];
-    scan.lengths[a].resize(scan.pitches.size());
-    for (std::size_t i = 0; i < scan.pitches.size(); ++i) {
-        scan.lengths[a][i] = std::abs(phasor(near[a], scan.pitches[i]));
+const std::vector<std::complex<double>>& unit_phasors(double value, PitchScan& scan) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    auto [it, added] = scan.unit_phasors.try_emplace(bits);
+    if (added) {
+        it->second.reserve(scan.pitches.size());
+        for (double pitch : scan.pitches) it->second.push_back(unit_phasor(value, pitch));
     }
-    return scan.lengths[a];
+    return it->second;
 }
 
 /// How well one lattice per axis, all of the pitch, holds the values, at each of the scan's
-/// pitches: 0..1.
+/// pitches: 0..1. Per pitch the sums run as phasor()'s do (axis by axis, value by value).
 std::vector<double> strengths(const AxisValues& near, PitchScan& scan) {
-    std::vector<double> out(scan.pitches.size(), 0.0);
+    const std::size_t count = scan.pitches.size();
+    std::vector<double> out(count, 0.0);
     const double w = total_weight(near);
     if (w <= 0.0) return out;
-    std::vector<double> sum(scan.pitches.size(), 0.0);
-    for (int a = 0; a < 3; ++a) {
-        const std::vector<double>& lengths = phasor_lengths(near, a, scan);
-        for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += lengths[i];
+    std::vector<double> lengths(count, 0.0);
+    std::vector<std::complex<double>> sum(count);
+    for (const auto& axis : near) {
+        std::fill(sum.begin(), sum.end(), 0.0);
+        for (const SharedValue& s : axis) {
+            const std::vector<std::complex<double>>& terms = unit_phasors(s.value, scan);
+            for (std::size_t i = 0; i < count; ++i) sum[i] += s.weight * terms[i];
+        }
+        for (std::size_t i = 0; i < count; ++i) lengths[i] += std::abs(sum[i]);
     }
-    for (std::size_t i = 0; i < sum.size(); ++i) out[i] = sum[i] / w;
+    for (std::size_t i = 0; i < count; ++i) out[i] = lengths[i] / w;
     return out;
 }
 
@@ -323,7 +335,7 @@ struct LatticeSeeds {
 
 /// What the two readings of one mesh (at the exact and at the rounded tolerance) share: its
 /// coordinates sorted per axis, its median edge length (the spacing the pitch search scales
-/// with) and the last pitch scan.
+/// with) and the unit phasors of the pitch scan.
 struct SharedWork {
     SortedCoordinates sorted;
     double spacing = 0.0;
