@@ -8,12 +8,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 #include <numbers>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "resharp/core/errors.h"
+#include "resharp/core/rounding.h"
 #include "resharp/io/mesh_io.h"
 #include "resharp/io/stl.h"
 #include "resharp/sim/csg.h"
@@ -127,6 +132,47 @@ void expect_estimates(const std::vector<GridMesh>& meshes) {
             expect_estimate(rounded, mesher, 1e-6, 1e-4);
         }
     }
+}
+
+/// The bits of a double: +0 and -0 differ, a NaN equals itself.
+std::uint64_t bits_of(double x) {
+    std::uint64_t b = 0;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+}
+
+TEST(RoundHalfAway, EqualsStdRoundToTheBit) {
+    std::vector<double> xs = {0.0,
+                              -0.0,
+                              0.5,
+                              -0.5,
+                              1.5,
+                              -1.5,
+                              2.5,
+                              -2.5,
+                              0.49999999999999994,
+                              -0.49999999999999994,
+                              0.3,
+                              -0.3,
+                              1e15 + 0.5,
+                              -1e15 - 0.5,
+                              0x1p52,
+                              -0x1p52,
+                              0x1p52 + 1.0,
+                              1e300,
+                              -1e300,
+                              std::numeric_limits<double>::infinity(),
+                              -std::numeric_limits<double>::infinity(),
+                              std::numeric_limits<double>::denorm_min()};
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int i = 0; i < 20000; ++i) {
+        const double scale = std::ldexp(1.0, static_cast<int>(random() % 60) - 4);
+        xs.push_back(unit(random) * scale);
+        xs.push_back(std::round(unit(random) * scale) + 0.5);  // exact halves
+    }
+    for (double x : xs) EXPECT_EQ(bits_of(round_half_away(x)), bits_of(std::round(x))) << x;
+    EXPECT_TRUE(std::isnan(round_half_away(std::numeric_limits<double>::quiet_NaN())));
 }
 
 TEST(VertexPlacement, NamesRoundTrip) {

@@ -36,8 +36,9 @@ constexpr Index kForwardBit = Index{1} << 31;
 /// that a vertex costs no allocation); gives their number. Every half-edge whose
 /// lower vertex is v lies in a face of v's ring, so the ring (already sorted by face) yields
 /// them without a second counting sort over all half-edges, and they sit side by side for the
-/// twin search. In a face with three distinct vertices only the two edges at v can be filed
-/// under it; a face with a repeated vertex has all three looked at.
+/// twin search. All three edges of each face are looked at: testing them costs less than
+/// finding v's corner, and a face with a repeated vertex needs all three anyway (in a face with
+/// three distinct vertices only the two edges at v can be filed under it).
 std::size_t file_halfedges_of(const Mesh& mesh, const Connectivity& c, Index v,
                               std::vector<EdgeEntry>& filed) {
     const auto ring = c.faces_around(v);
@@ -53,14 +54,9 @@ std::size_t file_halfedges_of(const Mesh& mesh, const Connectivity& c, Index v,
         if (f == previous) continue;  // a face using v twice is listed twice
         previous = f;
         const Triangle& t = mesh.triangles[f];
-        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) {
-            for (Index k = 0; k < 3; ++k) file(f, k, t[k], t[(k + 1) % 3]);
-            continue;
-        }
-        const Index k = t[0] == v ? 0 : t[1] == v ? 1 : 2;
-        const Index before = (k + 2) % 3;
-        file(f, k, v, t[(k + 1) % 3]);  // the edge leaving v
-        file(f, before, t[before], v);  // the edge entering v
+        file(f, 0, t[0], t[1]);
+        file(f, 1, t[1], t[2]);
+        file(f, 2, t[2], t[0]);
     }
     return static_cast<std::size_t>(next - filed.data());
 }

@@ -5,12 +5,16 @@
 #include <cfloat>
 #include <cmath>
 #include <complex>
+#include <cstdint>
+#include <cstring>
 #include <numbers>
 #include <span>
 #include <sstream>
+#include <unordered_map>
 #include <vector>
 
 #include "resharp/core/errors.h"
+#include "resharp/core/rounding.h"
 
 namespace resharp {
 namespace {
@@ -70,13 +74,24 @@ std::pair<double, std::optional<double>> coordinate_tolerances(const Mesh& mesh)
     return {ulps * DBL_EPSILON, all_float ? std::optional(ulps * FLT_EPSILON) : std::nullopt};
 }
 
-/// Per axis, the coordinate values at least kMinShared vertices hold (within `tol`), sorted.
-AxisValues shared_values(const Mesh& mesh, double tol) {
-    AxisValues out;
-    std::vector<double> xs(mesh.vertex_count());
+/// Per axis, every vertex's coordinate, sorted: what shared_values() groups, at either tolerance.
+using SortedCoordinates = std::array<std::vector<double>, 3>;
+
+SortedCoordinates sorted_coordinates(const Mesh& mesh) {
+    SortedCoordinates out;
     for (int a = 0; a < 3; ++a) {
-        for (std::size_t v = 0; v < xs.size(); ++v) xs[v] = mesh.positions[v][a];
-        std::sort(xs.begin(), xs.end());
+        out[a].resize(mesh.vertex_count());
+        for (std::size_t v = 0; v < out[a].size(); ++v) out[a][v] = mesh.positions[v][a];
+        std::sort(out[a].begin(), out[a].end());
+    }
+    return out;
+}
+
+/// Per axis, the coordinate values at least kMinShared vertices hold (within `tol`), sorted.
+AxisValues shared_values(const SortedCoordinates& sorted, double tol) {
+    AxisValues out;
+    for (int a = 0; a < 3; ++a) {
+        const std::vector<double>& xs = sorted[a];
         for (std::size_t i = 0; i < xs.size();) {
             std::size_t j = i + 1;
             while (j < xs.size() && xs[j] - xs[i] <= 2.0 * tol) ++j;
@@ -105,12 +120,17 @@ double median_edge_length(const Mesh& mesh) {
     return *middle;
 }
 
+/// e^(2 pi i value / pitch), the term phasor() adds for a value of weight 1.
+std::complex<double> unit_phasor(double value, double pitch) {
+    return std::polar(1.0, 2.0 * std::numbers::pi * value / pitch);
+}
+
 /// Sum of weight * e^(2 pi i value / pitch): its length over the total weight is 1 when every
 /// value lies on one lattice of this pitch, and its angle gives the lattice's phase.
 std::complex<double> phasor(std::span<const SharedValue> values, double pitch) {
     std::complex<double> sum = 0.0;
     for (const SharedValue& s : values) {
-        sum += s.weight * std::polar(1.0, 2.0 * std::numbers::pi * s.value / pitch);
+        sum += s.weight * unit_phasor(s.value, pitch);
     }
     return sum;
 }
@@ -123,13 +143,55 @@ double total_weight(const AxisValues& values) {
     return w;
 }
 
-/// How well one lattice per axis, all of `pitch`, holds the values: 0..1.
-double strength(const AxisValues& values, double pitch) {
-    const double w = total_weight(values);
-    if (w <= 0.0) return 0.0;
-    double sum = 0.0;
-    for (const auto& axis : values) sum += std::abs(phasor(axis, pitch));
-    return sum / w;
+/// The pitches coarse_lattices() scans: from spacing / 3 to 3 spacing, a constant factor apart.
+std::vector<double> scan_pitches(double spacing) {
+    constexpr double kReach = 2.0 * kWindowSpacings;  // the window's width, in spacings
+    const int steps = static_cast<int>(std::log(9.0) * 20.0 * kReach);
+    const double factor = std::pow(9.0, 1.0 / steps);
+    std::vector<double> pitches(steps + 1);
+    for (int i = 0; i <= steps; ++i) pitches[i] = spacing / 3.0 * std::pow(factor, i);
+    return pitches;
+}
+
+/// The scan's pitches, and the unit phasors at each of them of every value scanned so far. The
+/// two readings of a mesh (exact and rounded tolerance) share most of their windows' values, and
+/// a value's terms are the same bits in both: the second reading takes the sine and cosine of
+/// only its new values.
+struct PitchScan {
+    std::vector<double> pitches;
+    std::unordered_map<std::uint64_t, std::vector<std::complex<double>>> unit_phasors;  // by bits
+};
+
+const std::vector<std::complex<double>>& unit_phasors(double value, PitchScan& scan) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    auto [it, added] = scan.unit_phasors.try_emplace(bits);
+    if (added) {
+        it->second.reserve(scan.pitches.size());
+        for (double pitch : scan.pitches) it->second.push_back(unit_phasor(value, pitch));
+    }
+    return it->second;
+}
+
+/// How well one lattice per axis, all of the pitch, holds the values, at each of the scan's
+/// pitches: 0..1. Per pitch the sums run as phasor()'s do (axis by axis, value by value).
+std::vector<double> strengths(const AxisValues& near, PitchScan& scan) {
+    const std::size_t count = scan.pitches.size();
+    std::vector<double> out(count, 0.0);
+    const double w = total_weight(near);
+    if (w <= 0.0) return out;
+    std::vector<double> lengths(count, 0.0);
+    std::vector<std::complex<double>> sum(count);
+    for (const auto& axis : near) {
+        std::fill(sum.begin(), sum.end(), 0.0);
+        for (const SharedValue& s : axis) {
+            const std::vector<std::complex<double>>& terms = unit_phasors(s.value, scan);
+            for (std::size_t i = 0; i < count; ++i) sum[i] += s.weight * terms[i];
+        }
+        for (std::size_t i = 0; i < count; ++i) lengths[i] += std::abs(sum[i]);
+    }
+    for (std::size_t i = 0; i < count; ++i) out[i] = lengths[i] / w;
+    return out;
 }
 
 /// Per axis, the weighted median value.
@@ -162,20 +224,14 @@ AxisValues window(const AxisValues& values, const Vec3& centre, double reach) {
 /// (a window, so that the search steps can be coarse) peak, at most kCandidates of them. A
 /// lattice of pitch h also holds at h/2, h/3, ..., as strongly: the peaks nearly as strong as
 /// the strongest come first, coarsest first, then the others by strength.
-std::vector<Lattice> coarse_lattices(const AxisValues& near, double spacing) {
-    constexpr double kReach = 2.0 * kWindowSpacings;  // the window's width, in spacings
-    const int steps = static_cast<int>(std::log(9.0) * 20.0 * kReach);
-    const double factor = std::pow(9.0, 1.0 / steps);
-    std::vector<double> pitches(steps + 1), strengths(steps + 1);
-    for (int i = 0; i <= steps; ++i) {
-        pitches[i] = spacing / 3.0 * std::pow(factor, i);
-        strengths[i] = strength(near, pitches[i]);
-    }
+std::vector<Lattice> coarse_lattices(const AxisValues& near, PitchScan& scan) {
+    const std::vector<double>& pitches = scan.pitches;
+    const std::vector<double> strength = strengths(near, scan);
     std::vector<std::pair<double, double>> peaks;  // (strength, pitch)
-    for (int i = 1; i < steps; ++i) {
-        if (strengths[i] >= strengths[i - 1] && strengths[i] > strengths[i + 1] &&
-            strengths[i] >= kMinStrength) {
-            peaks.emplace_back(strengths[i], pitches[i]);
+    for (std::size_t i = 1; i + 1 < pitches.size(); ++i) {
+        if (strength[i] >= strength[i - 1] && strength[i] > strength[i + 1] &&
+            strength[i] >= kMinStrength) {
+            peaks.emplace_back(strength[i], pitches[i]);
         }
     }
     std::sort(peaks.rbegin(), peaks.rend());
@@ -204,11 +260,11 @@ Lattice fit_lattice(const AxisValues& values, const Lattice& l, const Vec3& cent
     std::array<double, 3> sw{}, sk{}, sd{}, skk{}, skd{};
     Vec3 anchor;
     for (int a = 0; a < 3; ++a) {
-        anchor[a] = l.phase[a] + std::round((centre[a] - l.phase[a]) / l.pitch) * l.pitch;
+        anchor[a] = l.phase[a] + round_half_away((centre[a] - l.phase[a]) / l.pitch) * l.pitch;
         for (const SharedValue& s : values[a]) {
             if (std::abs(s.value - centre[a]) > reach) continue;
             const double d = s.value - anchor[a];  // relative to the anchor: no cancellation
-            const double k = std::round(d / l.pitch);
+            const double k = round_half_away(d / l.pitch);
             if (std::abs(d - k * l.pitch) > band) continue;
             sw[a] += s.weight, sk[a] += s.weight * k, sd[a] += s.weight * d;
             skk[a] += s.weight * k * k, skd[a] += s.weight * k * d;
@@ -262,42 +318,69 @@ double weight_on_lines(const AxisValues& values, const Lattice& l, double tol) {
     for (int a = 0; a < 3; ++a) {
         for (const SharedValue& s : values[a]) {
             const double u = (s.value - l.phase[a]) / l.pitch;
-            if (std::abs(u - std::round(u)) * l.pitch <= 2.0 * tol) w += s.weight;
+            if (std::abs(u - round_half_away(u)) * l.pitch <= 2.0 * tol) w += s.weight;
         }
     }
     return w;
 }
 
-/// The lattices of the shared coordinate values, refined, strongest first (coarse_lattices);
-/// none if they show no common spacing.
-std::vector<Lattice> find_lattices(const AxisValues& values, double spacing, double tol) {
-    if (total_weight(values) <= 0.0 || !(spacing > 0.0)) return {};
-    const Vec3 centre = median_values(values);
-    const double reach = kWindowSpacings * spacing;
-    std::vector<Lattice> out;
-    for (const Lattice& coarse : coarse_lattices(window(values, centre, reach), spacing)) {
-        // The peak of a small part is broad, and values off the lattice pull it aside: the
-        // refinement starts from pitches around it too (kStarts each side, 0.5 % apart) and
-        // keeps the lattice whose lines hold the most values.
-        std::optional<Lattice> best;
-        double best_weight = 0.0;
-        for (int start = -kStarts; start <= kStarts; ++start) {
-            Lattice from = coarse;
-            from.pitch *= 1.0 + 0.005 * start;
-            const Lattice fine = refine_lattice(values, from, centre, reach, tol);
-            if (!(fine.pitch > 0.0) || std::abs(fine.pitch / coarse.pitch - 1.0) > 0.05) continue;
-            const double weight = weight_on_lines(values, fine, tol);
-            if (weight > best_weight) best = fine, best_weight = weight;
-        }
-        if (best) out.push_back(*best);
+/// Where the lattice search starts: the values' weighted median, the first window's reach around
+/// it, and the coarse lattices found in that window, strongest first (coarse_lattices; none if
+/// the values show no common spacing).
+struct LatticeSeeds {
+    Vec3 centre = Vec3::Zero();
+    double reach = 0.0;
+    std::vector<Lattice> coarse;
+};
+
+/// What the two readings of one mesh (at the exact and at the rounded tolerance) share: its
+/// coordinates sorted per axis, its median edge length (the spacing the pitch search scales
+/// with) and the unit phasors of the pitch scan.
+struct SharedWork {
+    SortedCoordinates sorted;
+    double spacing = 0.0;
+    PitchScan scan;
+};
+
+SharedWork shared_work(const Mesh& mesh) {
+    SharedWork work{sorted_coordinates(mesh), median_edge_length(mesh), {}};
+    work.scan.pitches = scan_pitches(work.spacing);
+    return work;
+}
+
+LatticeSeeds lattice_seeds(const AxisValues& values, SharedWork& work) {
+    LatticeSeeds seeds;
+    if (total_weight(values) <= 0.0 || !(work.spacing > 0.0)) return seeds;
+    seeds.centre = median_values(values);
+    seeds.reach = kWindowSpacings * work.spacing;
+    seeds.coarse = coarse_lattices(window(values, seeds.centre, seeds.reach), work.scan);
+    return seeds;
+}
+
+/// One coarse lattice refined over all values, or nothing if no refinement stays within 5 % of
+/// its pitch. The peak of a small part is broad, and values off the lattice pull it aside: the
+/// refinement starts from pitches around it too (kStarts each side, 0.5 % apart) and keeps the
+/// lattice whose lines hold the most values. The caller refines one coarse lattice at a time,
+/// so that a search that stops at the first grid found refines no more.
+std::optional<Lattice> refined_lattice(const AxisValues& values, const LatticeSeeds& seeds,
+                                       const Lattice& coarse, double tol) {
+    std::optional<Lattice> best;
+    double best_weight = 0.0;
+    for (int start = -kStarts; start <= kStarts; ++start) {
+        Lattice from = coarse;
+        from.pitch *= 1.0 + 0.005 * start;
+        const Lattice fine = refine_lattice(values, from, seeds.centre, seeds.reach, tol);
+        if (!(fine.pitch > 0.0) || std::abs(fine.pitch / coarse.pitch - 1.0) > 0.05) continue;
+        const double weight = weight_on_lines(values, fine, tol);
+        if (weight > best_weight) best = fine, best_weight = weight;
     }
-    return out;
+    return best;
 }
 
 /// Signed offset of x from the nearest grid line, in pitches: (-0.5, 0.5].
 double line_offset(double x, double origin, double pitch) {
     const double u = (x - origin) / pitch;
-    return u - std::round(u);
+    return u - round_half_away(u);
 }
 
 /// How the vertices sit on the edges of `grid` (shares of #V; midpoint of those on edges).
@@ -307,18 +390,25 @@ struct EdgeStats {
     double midpoint = 0.0;  ///< of those on edges, two on lines and the third at the middle
 };
 
+/// How many coordinates of p lie on a line of `grid` (within `within` pitches), and the last axis
+/// whose coordinate does not.
+std::pair<int, int> lines_through(const Vec3& p, const Grid& grid, double within) {
+    int on_lines = 0, free_axis = 0;
+    for (int a = 0; a < 3; ++a) {
+        if (std::abs(line_offset(p[a], grid.origin[a], grid.pitch)) <= within) {
+            ++on_lines;
+        } else {
+            free_axis = a;
+        }
+    }
+    return {on_lines, free_axis};
+}
+
 EdgeStats edge_stats(const Mesh& mesh, const Grid& grid, double tol) {
     const double within = 2.0 * tol / grid.pitch;  // in pitches
     std::size_t on_edge = 0, on_node = 0, midpoint = 0;
     for (const Vec3& p : mesh.positions) {
-        int on_lines = 0, free_axis = 0;
-        for (int a = 0; a < 3; ++a) {
-            if (std::abs(line_offset(p[a], grid.origin[a], grid.pitch)) <= within) {
-                ++on_lines;
-            } else {
-                free_axis = a;
-            }
-        }
+        const auto [on_lines, free_axis] = lines_through(p, grid, within);
         if (on_lines < 2) continue;
         ++on_edge;
         if (on_lines == 3) {
@@ -334,6 +424,27 @@ EdgeStats edge_stats(const Mesh& mesh, const Grid& grid, double tol) {
             on_edge > 0 ? static_cast<double>(midpoint) / static_cast<double>(on_edge) : 0.0};
 }
 
+/// edge_stats().on_edge when it is at least `at_least`, else nothing. Stops as soon as the
+/// vertices not yet looked at, were all of them on edges, could no longer lift the share to
+/// `at_least`: on a mesh whose vertices are off this grid's edges that is after a few hundred.
+/// The share it gives is edge_stats()'s to the bit (same count, same division).
+std::optional<double> on_edge_share_reaching(const Mesh& mesh, const Grid& grid, double tol,
+                                             double at_least) {
+    const double within = 2.0 * tol / grid.pitch;
+    const std::size_t nv = mesh.vertex_count();
+    const double n = static_cast<double>(nv);
+    std::size_t on_edge = 0;
+    for (std::size_t v = 0; v < nv; ++v) {
+        on_edge += lines_through(mesh.positions[v], grid, within).first >= 2 ? 1 : 0;
+        // On the largest share still possible: every vertex after v on an edge.
+        if (v % 64 == 63 && static_cast<double>(on_edge + (nv - 1 - v)) / n < at_least) {
+            return std::nullopt;
+        }
+    }
+    const double share = static_cast<double>(on_edge) / n;
+    return share >= at_least ? std::optional(share) : std::nullopt;
+}
+
 /// The coarsest grid whose edges still hold nearly every vertex, from `fine` (which must): a
 /// lattice of pitch h also fits at h/2 (where flat faces happen to lie on the half lines, or a
 /// midpoint mesh's vertices are all on the nodes of the half grid). Each doubling keeps the
@@ -347,8 +458,9 @@ Grid coarsest_edge_grid(const Mesh& mesh, Grid fine, double tol) {
             for (int a = 0; a < 3; ++a) {
                 if ((parity >> a) & 1) g.origin[a] += fine.pitch;
             }
-            const double share = edge_stats(mesh, g, tol).on_edge;
-            if (share >= best_share) best = g, best_share = share;
+            if (const auto share = on_edge_share_reaching(mesh, g, tol, best_share)) {
+                best = g, best_share = *share;
+            }
         }
         if (!best) break;
         fine = *best;
@@ -386,8 +498,8 @@ double dual_share(const Mesh& mesh, const Grid& grid, double tol, std::size_t sa
             const Vec3& p = mesh.positions[mesh.triangles[f][k]];
             for (int a = 0; a < 3; ++a) {
                 const double u = (p[a] - grid.origin[a]) / grid.pitch;
-                const bool on = std::abs(u - std::round(u)) <= within;
-                cell[k][a] = on ? std::round(u) : std::floor(u);
+                const bool on = std::abs(u - round_half_away(u)) <= within;
+                cell[k][a] = on ? round_half_away(u) : std::floor(u);
                 on_line |= on ? 1 << (3 * k + a) : 0;
             }
         }
@@ -527,36 +639,50 @@ std::pair<Grid, double> best_dual_grid(const Mesh& mesh, const std::vector<Grid>
     return {candidates[chosen], shares[chosen]};
 }
 
-/// The estimate from the mesh alone, coordinates compared within `tol`.
-PlacementEstimate estimate_within(const Mesh& mesh, double tol) {
+/// What estimate_within() looks for: a grid whose edges hold the vertices, or one the mesh is
+/// dual to as well.
+enum class Search { EdgeGridOnly, Any };
+
+/// The estimate from the mesh alone, coordinates compared within `tol`. With
+/// Search::EdgeGridOnly, where no grid's edges hold the vertices it says so and stops there
+/// (an on-edge share of 0).
+PlacementEstimate estimate_within(const Mesh& mesh, double tol, Search search, SharedWork& work) {
     PlacementEstimate e;
-    const std::vector<Lattice> lattices =
-        find_lattices(shared_values(mesh, tol), median_edge_length(mesh), tol);
-    if (lattices.empty()) {
-        e.reason =
-            "no coordinate values shared by many vertices at a common spacing: no grid, "
-            "exact";
-        return e;
-    }
+    const AxisValues values = shared_values(work.sorted, tol);
+    const LatticeSeeds seeds = lattice_seeds(values, work);
     // A grid-edge mesh takes the first grid whose edges hold its vertices. Only then may a mesh
     // be dual: a grid-edge mesh is dual to its grid shifted by half a cell on every axis (its
     // triangles span the eighths of a cell), so the dual test alone cannot tell them apart. A
     // dual mesh takes the grid with the most dual triangles over all lattices (a pitch a little
     // off still holds most of them).
     const std::string source = "the grid of the shared coordinates";
+    std::optional<double> first_pitch;  // of the first lattice refined
     std::vector<Grid> candidates;
-    for (const Lattice& lattice : lattices) {
-        if (lattice.pitch < 64.0 * tol) continue;  // rounded too coarsely to tell
-        for (const Grid& g : shifted_grids(lattice)) {
-            if (edge_stats(mesh, g, tol).on_edge >= kOnEdgeShare) {
+    for (const Lattice& coarse : seeds.coarse) {  // Bound: kCandidates lattices
+        const std::optional<Lattice> lattice = refined_lattice(values, seeds, coarse, tol);
+        if (!lattice) continue;
+        if (!first_pitch) first_pitch = lattice->pitch;
+        if (lattice->pitch < 64.0 * tol) continue;  // rounded too coarsely to tell
+        for (const Grid& g : shifted_grids(*lattice)) {
+            if (on_edge_share_reaching(mesh, g, tol, kOnEdgeShare)) {
                 return classify_on(mesh, coarsest_edge_grid(mesh, g, tol), tol, source);
             }
             candidates.push_back(g);
         }
     }
+    if (!first_pitch) {
+        e.reason =
+            "no coordinate values shared by many vertices at a common spacing: no grid, "
+            "exact";
+        return e;
+    }
+    if (search == Search::EdgeGridOnly) {
+        e.reason = "no grid's edges hold the vertices";
+        return e;
+    }
     std::ostringstream r;
     r.precision(9);
-    r << "the spacings of the shared coordinates (first " << lattices.front().pitch << ") ";
+    r << "the spacings of the shared coordinates (first " << *first_pitch << ") ";
     if (candidates.empty()) {
         r << "are below the coordinates' rounding: cannot tell, exact";
         e.reason = r.str();
@@ -640,12 +766,17 @@ PlacementEstimate estimate_vertex_placement(const Mesh& full, const std::optiona
     // vertex h/512 off a line be told from it) or rounded: the first where nearly every vertex
     // lies on grid edges, else the rounded reading.
     const auto [exact_tol, float_tol] = coordinate_tolerances(mesh);
-    const auto estimate = [&](double tol) {
+    std::optional<SharedWork> work;
+    if (!given) work = shared_work(mesh);
+    const auto estimate = [&](double tol, Search search) {
         return given ? classify_on(mesh, *given, tol, "the given grid")
-                     : estimate_within(mesh, tol);
+                     : estimate_within(mesh, tol, search, *work);
     };
-    PlacementEstimate e = estimate(exact_tol);
-    if (float_tol && e.on_grid_edge_share < kOnEdgeShare) e = estimate(*float_tol);
+    // The first reading stands only where a grid's edges hold the vertices (a share of
+    // kOnEdgeShare or more, which no dual grid reaches: estimate_within() tests every grid for
+    // that first); with a rounded reading to follow, it need not look for a dual grid.
+    PlacementEstimate e = estimate(exact_tol, float_tol ? Search::EdgeGridOnly : Search::Any);
+    if (float_tol && e.on_grid_edge_share < kOnEdgeShare) e = estimate(*float_tol, Search::Any);
     return e;
 }
 
