@@ -7,7 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <complex>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -19,6 +21,7 @@
 
 #include "resharp/core/errors.h"
 #include "resharp/core/rounding.h"
+#include "resharp/core/turn_phasor.h"
 #include "resharp/io/mesh_io.h"
 #include "resharp/io/stl.h"
 #include "resharp/sim/csg.h"
@@ -173,6 +176,32 @@ TEST(RoundHalfAway, EqualsStdRoundToTheBit) {
     }
     for (double x : xs) EXPECT_EQ(bits_of(round_half_away(x)), bits_of(std::round(x))) << x;
     EXPECT_TRUE(std::isnan(round_half_away(std::numeric_limits<double>::quiet_NaN())));
+}
+
+TEST(TurnPhasor, WithinItsBoundOfStdPolar) {
+    // Quarter and eighth turns (the reduction's edges), small and large turns, both signs.
+    std::vector<double> turns = {0.0,  -0.0, 0.125, -0.125, 0.25,   -0.25,     0.375,       0.5,
+                                 -0.5, 0.75, 1.0,   -1.0,   1e-300, 1234.5678, -98765.4321, 0x1p49};
+    std::mt19937_64 random(14);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int i = 0; i < 20000; ++i) {
+        turns.push_back(unit(random) * std::ldexp(1.0, static_cast<int>(random() % 40) - 10));
+    }
+    double worst = 0.0;  // of the error over its bound
+    for (double x : turns) {
+        const std::complex<double> approximate = approximate_turn_phasor(x);
+        const std::complex<double> library = std::polar(1.0, 2.0 * std::numbers::pi * x);
+        const double error = std::max(std::abs(approximate.real() - library.real()),
+                                      std::abs(approximate.imag() - library.imag()));
+        worst = std::max(worst, error / turn_phasor_error(x));
+    }
+    EXPECT_LE(worst, 1.0);
+    EXPECT_GT(worst, 0.0);  // it is an approximation: the bound is not vacuous
+    // Beyond 2^50 turns and where not finite, the library's value itself.
+    for (double x : {0x1p50, -0x1p60, std::numeric_limits<double>::infinity()}) {
+        const std::complex<double> library = std::polar(1.0, 2.0 * std::numbers::pi * x);
+        EXPECT_EQ(bits_of(approximate_turn_phasor(x).real()), bits_of(library.real())) << x;
+    }
 }
 
 TEST(VertexPlacement, NamesRoundTrip) {

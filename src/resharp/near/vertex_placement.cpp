@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <sstream>
 #include <unordered_map>
@@ -15,6 +16,7 @@
 
 #include "resharp/core/errors.h"
 #include "resharp/core/rounding.h"
+#include "resharp/core/turn_phasor.h"
 
 namespace resharp {
 namespace {
@@ -153,45 +155,97 @@ std::vector<double> scan_pitches(double spacing) {
     return pitches;
 }
 
-/// The scan's pitches, and the unit phasors at each of them of every value scanned so far. The
-/// two readings of a mesh (exact and rounded tolerance) share most of their windows' values, and
-/// a value's terms are the same bits in both: the second reading takes the sine and cosine of
-/// only its new values.
+/// The scan's pitches, and the approximate unit phasors (approximate_turn_phasor) at each of them
+/// of every value scanned so far. The two readings of a mesh (exact and rounded tolerance) share
+/// most of their windows' values, and a value's terms are the same bits in both: the second
+/// reading computes those of its new values only.
 struct PitchScan {
     std::vector<double> pitches;
     std::unordered_map<std::uint64_t, std::vector<std::complex<double>>> unit_phasors;  // by bits
 };
 
-const std::vector<std::complex<double>>& unit_phasors(double value, PitchScan& scan) {
+const std::vector<std::complex<double>>& approximate_unit_phasors(double value, PitchScan& scan) {
     std::uint64_t bits = 0;
     std::memcpy(&bits, &value, sizeof bits);
     auto [it, added] = scan.unit_phasors.try_emplace(bits);
     if (added) {
         it->second.reserve(scan.pitches.size());
-        for (double pitch : scan.pitches) it->second.push_back(unit_phasor(value, pitch));
+        for (double pitch : scan.pitches) {
+            it->second.push_back(approximate_turn_phasor(value / pitch));
+        }
     }
     return it->second;
 }
 
-/// How well one lattice per axis, all of the pitch, holds the values, at each of the scan's
-/// pitches: 0..1. Per pitch the sums run as phasor()'s do (axis by axis, value by value).
-std::vector<double> strengths(const AxisValues& near, PitchScan& scan) {
+/// How well one lattice per axis, all of the pitch, holds the values (0..1), as the scan
+/// compares it: the sums run as phasor()'s do (axis by axis, value by value), so that a peak
+/// found with approximate_strengths() is confirmed with the same bits wherever it is looked at.
+/// `near` must have a positive total weight.
+double exact_strength(const AxisValues& near, double pitch) {
+    double length = 0.0;
+    for (const auto& axis : near) length += std::abs(phasor(axis, pitch));
+    return length / total_weight(near);
+}
+
+/// exact_strength() at each of the scan's pitches from approximate phasors, and a bound on how
+/// far any of them may be from it: each term is off by at most turn_phasor_error() of the
+/// largest value over the finest pitch per component (its length by sqrt 2 of that), and the
+/// sums' own rounding differs by at most n units in the last place of the total weight for n
+/// values (doubled, with room, in `error`).
+struct ApproximateStrengths {
+    std::vector<double> strength;
+    double error = 0.0;
+};
+
+ApproximateStrengths approximate_strengths(const AxisValues& near, PitchScan& scan) {
     const std::size_t count = scan.pitches.size();
-    std::vector<double> out(count, 0.0);
     const double w = total_weight(near);
-    if (w <= 0.0) return out;
-    std::vector<double> lengths(count, 0.0);
+    ApproximateStrengths out{std::vector<double>(count, 0.0), 0.0};
     std::vector<std::complex<double>> sum(count);
+    double largest = 0.0;
+    std::size_t most = 0;
     for (const auto& axis : near) {
         std::fill(sum.begin(), sum.end(), 0.0);
         for (const SharedValue& s : axis) {
-            const std::vector<std::complex<double>>& terms = unit_phasors(s.value, scan);
+            const std::vector<std::complex<double>>& terms =
+                approximate_unit_phasors(s.value, scan);
             for (std::size_t i = 0; i < count; ++i) sum[i] += s.weight * terms[i];
+            largest = std::max(largest, std::abs(s.value));
         }
-        for (std::size_t i = 0; i < count; ++i) lengths[i] += std::abs(sum[i]);
+        for (std::size_t i = 0; i < count; ++i) out.strength[i] += std::abs(sum[i]);
+        most = std::max(most, axis.size());
     }
-    for (std::size_t i = 0; i < count; ++i) out[i] = lengths[i] / w;
+    for (double& x : out.strength) x /= w;
+    const double term = turn_phasor_error(largest / scan.pitches.front());
+    out.error = 4.0 * (term + static_cast<double>(most + 8) * DBL_EPSILON);
     return out;
+}
+
+/// The pitches at which exact_strength() has a local peak of at least kMinStrength, with that
+/// strength: (strength, pitch). exact_strength() is taken only where the approximate strengths,
+/// within their error, could make a peak; elsewhere none can be.
+std::vector<std::pair<double, double>> strength_peaks(const AxisValues& near, PitchScan& scan) {
+    const std::vector<double>& pitches = scan.pitches;
+    std::vector<std::pair<double, double>> peaks;
+    if (total_weight(near) <= 0.0) return peaks;
+    const ApproximateStrengths approximate = approximate_strengths(near, scan);
+    const std::vector<double>& s = approximate.strength;
+    const double e = approximate.error;
+    std::vector<std::optional<double>> exact(pitches.size());
+    const auto exact_at = [&](std::size_t i) {
+        if (!exact[i]) exact[i] = exact_strength(near, pitches[i]);
+        return *exact[i];
+    };
+    for (std::size_t i = 1; i + 1 < pitches.size(); ++i) {
+        if (s[i] < s[i - 1] - 2.0 * e || s[i] <= s[i + 1] - 2.0 * e || s[i] < kMinStrength - e) {
+            continue;  // exact_strength() cannot peak here
+        }
+        const double here = exact_at(i);
+        if (here >= exact_at(i - 1) && here > exact_at(i + 1) && here >= kMinStrength) {
+            peaks.emplace_back(here, pitches[i]);
+        }
+    }
+    return peaks;
 }
 
 /// Per axis, the weighted median value.
@@ -225,15 +279,7 @@ AxisValues window(const AxisValues& values, const Vec3& centre, double reach) {
 /// lattice of pitch h also holds at h/2, h/3, ..., as strongly: the peaks nearly as strong as
 /// the strongest come first, coarsest first, then the others by strength.
 std::vector<Lattice> coarse_lattices(const AxisValues& near, PitchScan& scan) {
-    const std::vector<double>& pitches = scan.pitches;
-    const std::vector<double> strength = strengths(near, scan);
-    std::vector<std::pair<double, double>> peaks;  // (strength, pitch)
-    for (std::size_t i = 1; i + 1 < pitches.size(); ++i) {
-        if (strength[i] >= strength[i - 1] && strength[i] > strength[i + 1] &&
-            strength[i] >= kMinStrength) {
-            peaks.emplace_back(strength[i], pitches[i]);
-        }
-    }
+    std::vector<std::pair<double, double>> peaks = strength_peaks(near, scan);  // (strength, pitch)
     std::sort(peaks.rbegin(), peaks.rend());
     if (peaks.size() > kCandidates) peaks.resize(kCandidates);
     const double strongest = peaks.empty() ? 0.0 : peaks.front().first;
