@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "cube_creases.h"
 #include "resharp/core/errors.h"
 #include "resharp/eval/exact_creases.h"
 #include "support/simple_meshes.h"
@@ -17,13 +18,7 @@ constexpr double kSide = 10.0;
 const double kDiagonal = kSide * std::sqrt(3.0);
 const CreaseMetricsOptions kOptions{.tolerance = 1e-3, .unit = kDiagonal};  // τ = 0.017 mm
 
-CurveSamples cube_creases() {
-    sim::CsgNode node;
-    node.shape = sim::BoxShape{Vec3::Zero(), Vec3::Constant(kSide)};
-    const sim::CsgSolid cube(node);
-    return sample_exact_creases(
-        cube, sim::sample_solid(sim::phased_grid(cube.bounds(), 0.05, 0.4142), cube));
-}
+CurveSamples cube_creases() { return test::cube_creases(kSide); }
 
 /// The cube grown by `e` on every side: its edges e sqrt(2) from the true ones.
 Mesh grown_cube(double e) {
