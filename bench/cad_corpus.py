@@ -48,8 +48,11 @@ def solid_file(root, scratch, part, rotated):
     return out
 
 
-def measure(exe, solid, scratch, name, cells, simulate_flags=()):
-    """One run: simulated (with `simulate_flags`, e.g. a mesher), restored, evaluated."""
+def measure(exe, solid, scratch, name, cells, simulate_flags=(), in_process=False):
+    """One run: simulated (with `simulate_flags`, e.g. a mesher), restored, evaluated.
+    `in_process`: restored by `resharp evaluate --restore` (the same restore() with default
+    options, the same output), which then also tells why sharp edges are missed
+    (cad.crease_losses)."""
     mesh = os.path.join(scratch, name + ".ply")
     oracle = os.path.join(scratch, name + "_oracle.ply")
     restored = os.path.join(scratch, name + "_restored.ply")
@@ -58,11 +61,13 @@ def measure(exe, solid, scratch, name, cells, simulate_flags=()):
     grid = ["--cells", str(cells)]
     run([exe, "simulate", "--solid", solid, "-o", mesh, "--oracle", oracle, "-q"] + grid +
         list(simulate_flags))
-    run([exe, "restore", mesh, "-o", restored, "--report", report, "-q"])
+    if not in_process:
+        run([exe, "restore", mesh, "-o", restored, "--report", report, "-q"])
     run([exe, "evaluate", "--input", mesh, "--oracle", oracle, "--solid", solid, "--output",
-         restored, "--json", scores, "-q"] + grid)
-    r, e = load(report), load(scores)
-    return {"triangles_in": r.get("input", {}).get("triangles"),
+         restored, "--json", scores, "-q"] + grid + (["--restore"] if in_process else []))
+    e = load(scores)
+    return {"triangles_in": e["validity"]["input"]["triangles"],
+            "flipped_by_origin": e.get("flipped_by_origin"),
             "cad": e["cad"], "flipped": e["flipped_triangles"],
             "self_intersections": e["self_intersections"],
             "self_intersections_input": e["self_intersections_input"],

@@ -68,11 +68,12 @@ def measure_job(exe, root, scratch, part, mesher, reuse=False):
 
     return {"input": side(e["surface"]["input"]), "output": side(e["surface"]["output"]),
             "triangles": e["validity"]["input"]["triangles"],
-            "flipped": e["flipped_triangles"], "self_intersections": e["self_intersections"]}
+            "flipped": e["flipped_triangles"], "flipped_by_origin": e.get("flipped_by_origin"),
+            "self_intersections": e["self_intersections"]}
 
 
 def measure_cad(exe, solid, scratch, name, cells, mesher):
-    r = measure(exe, solid, scratch, name, cells, ["--mesher", mesher])
+    r = measure(exe, solid, scratch, name, cells, ["--mesher", mesher], in_process=True)
     cad = r["cad"]
 
     def side(s):
@@ -81,7 +82,48 @@ def measure_cad(exe, solid, scratch, name, cells, mesher):
 
     return {"input": side(cad["input"]), "output": side(cad["output"]),
             "triangles": r["triangles_in"], "flipped": r["flipped"],
+            "flipped_by_origin": r["flipped_by_origin"], "losses": cad.get("crease_losses"),
             "self_intersections": r["self_intersections"]}
+
+
+# (key in crease_losses.missed_length, column label), in the order restore() meets them.
+LOSSES = [("no_band", "no band"), ("not_placed", "not placed"),
+          ("refused_by_guard", "guard"), ("undone_by_harm_check", "harm check"),
+          ("inserted_no_sharp_edge", "inserted, no sharp edge"),
+          ("inserted_off_by_more_than_tau", "inserted, off > tau")]
+MOVE_FATES = ["no_move_planned", "moves_undone", "moved"]
+ORIGINS = ["input", "moves", "split"]
+
+
+def percent(part, whole):
+    return f"{100 * part / whole:.1f}" if whole else "-"
+
+
+def losses_table(results):
+    """Why the CAD rows' Edge F-score falls short: true sharp-edge length missed (beyond tau of
+    the output's) by cause, in % of the true length; output sharp-edge length beyond tau of the
+    true, by origin, in % of the output's; flipped faces by origin."""
+    head = (["part", "axes", "missed"] + [label for _, label in LOSSES] +
+            ["missed: no move / undone / moved", "false", "false: input / moves / split",
+             "false: stray", "flipped: input / moves / split"])
+    lines = ["| " + " | ".join(head) + " |", "|" + " --- |" * len(head)]
+    for part, axes, r in rows(results):
+        l = r.get("losses")
+        if not l:
+            continue
+        whole, out = l["true_length"], l["mesh_length"]
+        missed = {k: sum(l["missed_length"][k].values()) for k, _ in LOSSES}
+        by_move = [sum(l["missed_length"][k][m] for k, _ in LOSSES) for m in MOVE_FATES]
+        false = [l["false_length_beside_true"][o] + l["false_length_stray"][o] for o in ORIGINS]
+        stray = sum(l["false_length_stray"].values())
+        flipped = r.get("flipped_by_origin") or {}
+        lines.append("| " + " | ".join(
+            [part, axes, percent(sum(missed.values()), whole)] +
+            [percent(missed[k], whole) for k, _ in LOSSES] +
+            [" / ".join(percent(m, whole) for m in by_move), percent(sum(false), out),
+             " / ".join(percent(f, out) for f in false), percent(stray, out),
+             " / ".join(str(flipped.get(o, "-")) for o in ORIGINS)]) + " |")
+    return "\n".join(lines)
 
 
 def missed_goals(mesher, r):
@@ -154,7 +196,8 @@ def section(mesher, raw):
         "`examples/<part>/job.json` at the job's pitch; CAD parts: `--solid "
         f"examples/cad/<part>.json --cells {info['cells']}`, *aligned* and *rotated* as "
         "`bench/cad_corpus.py` turns them), restored by `resharp restore` with default options "
-        "and scored by `resharp evaluate` (`--job` or `--solid`). Each cell reads *input -> "
+        "(CAD parts: the same restore() run by `resharp evaluate --restore`) and scored by "
+        "`resharp evaluate` (`--job` or `--solid`). Each cell reads *input -> "
         "restored*. Distances in bounding-box diagonals (the stock box for benchmark parts); "
         "*Chamfer*: mean distance both ways to the exact surface; *NC*: normal consistency; "
         "*ECD*: Edge Chamfer Distance (mean squared distance both ways between the sharp edges "
@@ -177,6 +220,26 @@ def section(mesher, raw):
         summary(mesher, raw["results"][mesher]),
         "",
         mesher_table(mesher, raw["results"][mesher]),
+        "",
+        "Why the CAD rows miss (`resharp evaluate --restore`, `cad.crease_losses` and "
+        "`flipped_by_origin` of its JSON, `eval/crease_losses.h`). *Missed*: true sharp-edge "
+        "length farther than tau from every output sharp edge, in % of the true length (1 - "
+        "recall), by the first stage that lost it, read off the band faces of the input within "
+        "one grid pitch: *no band* (no edge or corner triangle there: not detected, or its "
+        "crossing edges dropped as smooth), *not placed* (no candidate point: the flip or spike "
+        "test, or no feature normal), *guard* (every candidate refused by the point guard), "
+        "*harm check* (accepted, withdrawn by the harm check), *inserted, no sharp edge* (points "
+        "inserted but no output sharp edge within a pitch: the faces around meet at under 30 "
+        "degrees), *inserted, off > tau* (an output sharp edge within a pitch but beyond tau: "
+        "the fitted planes or the moves off); then the same length by what became of the moves "
+        "of those faces' vertices. *False*: output sharp-edge length farther than tau from every "
+        "true edge, in % of the output's (1 - precision), by where the edge came from: an input "
+        "edge left in place, an input edge with a moved vertex, an edge with a new point; "
+        "*stray*: the part of it farther than a pitch from every true edge. *Flipped*: the "
+        "flipped faces above, by what turned them (already turned in the input and left so, "
+        "turned by the moves, pieces cut by the split).",
+        "",
+        losses_table(raw["results"][mesher]),
         "",
         end,
     ])

@@ -2,6 +2,7 @@
 // surface (docs/design.md §5, docs/results.md): ideal points on the exact junction of the job's
 // surfaces, and the first-order (eq. 5.2) ones beside them. A thin layer over resharp::eval.
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -16,6 +17,7 @@
 #include "resharp/core/errors.h"
 #include "resharp/core/stage_timer.h"
 #include "resharp/eval/cad_metrics.h"
+#include "resharp/eval/crease_losses.h"
 #include "resharp/eval/detection.h"
 #include "resharp/eval/evaluation_files.h"
 #include "resharp/eval/exact_creases.h"
@@ -211,15 +213,43 @@ json to_json(const eval::CadMetrics& m) {
             {"crease_length_ratio", number(c.length_ratio)}};
 }
 
-/// The "cad" block: the measures of a CAD part against the CSG solid, input and output.
+json to_json(const eval::CreaseLosses& l) {
+    json missed, beside, stray;
+    for (std::size_t k = 0; k < eval::kCreaseLossCount; ++k) {
+        json by_moves;
+        for (std::size_t m = 0; m < eval::kMoveFateCount; ++m)
+            by_moves[std::string(eval::move_fate_name(eval::MoveFate(m)))] = l.missed[k][m];
+        missed[std::string(eval::crease_loss_name(eval::CreaseLoss(k)))] = by_moves;
+    }
+    for (std::size_t o = 0; o < eval::kOriginCount; ++o) {
+        const std::string name(eval::origin_name(eval::Origin(o)));
+        beside[name] = l.false_beside[o];
+        stray[name] = l.false_stray[o];
+    }
+    return {{"true_length", l.true_length},
+            {"missed_length", missed},
+            {"mesh_length", l.mesh_length},
+            {"false_length_beside_true", beside},
+            {"false_length_stray", stray}};
+}
+
+/// The "cad" block: the measures of a CAD part against the CSG solid, input and output, and,
+/// where restore() ran here (its segmentation known), why the output's sharp edges miss.
 json cad_block(const ExactReference& reference, const Mesh& input, const Mesh& output,
-               const eval::SurfaceMetrics& surface_in, const eval::SurfaceMetrics& surface_out,
-               eval::CadMetricsOptions cad) {
+               const Segmentation& segmentation, const eval::SurfaceMetrics& surface_in,
+               const eval::SurfaceMetrics& surface_out, eval::CadMetricsOptions cad) {
     const eval::CurveSamples creases = eval::sample_exact_creases(
         *reference.csg, reference.grid, {.sharp_angle_deg = cad.sharp_angle_deg});
     cad.spacing = reference.grid.spec.pitch;
     const double diagonal = reference.csg->bounds().diagonal().norm();
+    json losses = nullptr;
+    if (!segmentation.point_fate.empty()) {
+        losses = to_json(eval::find_crease_losses(
+            input, output, segmentation, creases, reference.h, cad.sharp_angle_deg, cad.spacing,
+            {.tolerance = cad.tolerance, .far = cad.far, .unit = diagonal}));
+    }
     return {
+        {"crease_losses", losses},
         {"output", to_json(eval::measure_cad_part(output, surface_out, creases, diagonal, cad))},
         {"input", to_json(eval::measure_cad_part(input, surface_in, creases, diagonal, cad))},
         {"diagonal_mm", diagonal},
@@ -338,13 +368,20 @@ void run_evaluate(EvaluateArguments args) {
     const eval::MeshValidity valid_in = eval::check_validity(input);
     const eval::MeshValidity valid_out = eval::check_validity(output);
     // Moved faces keep their corners' numbers: with moves every output face is judged.
-    j["flipped_triangles"] = eval::count_flipped_faces(
-        placed, output, oracle, exact,
-        moved > 0 ? eval::FlipScope::AllFaces : eval::FlipScope::ChangedFaces);
+    const std::vector<std::uint8_t> flipped =
+        eval::flipped_faces(placed, output, oracle, exact,
+                            moved > 0 ? eval::FlipScope::AllFaces : eval::FlipScope::ChangedFaces);
+    const std::vector<std::uint8_t> flipped_in_input =
+        eval::flipped_faces(input, input, oracle, exact, eval::FlipScope::AllFaces);
+    j["flipped_triangles"] = std::count(flipped.begin(), flipped.end(), 1);
     j["flipped_scope"] = moved > 0 ? "all faces" : "changed faces";
+    // What turned them: already turned in the input (and left so), turned by the moves, or a
+    // piece the split cut.
+    const auto by_origin = eval::flipped_by_origin(input, output, flipped, flipped_in_input);
+    for (std::size_t o = 0; o < eval::kOriginCount; ++o)
+        j["flipped_by_origin"][std::string(eval::origin_name(eval::Origin(o)))] = by_origin[o];
     j["moved_input_vertices"] = moved;
-    j["flipped_triangles_input"] =
-        eval::count_flipped_faces(input, input, oracle, exact, eval::FlipScope::AllFaces);
+    j["flipped_triangles_input"] = std::count(flipped_in_input.begin(), flipped_in_input.end(), 1);
     j["self_intersections"] = valid_out.self_intersections;
     j["self_intersections_input"] = valid_in.self_intersections;
     j["nonmanifold_edges"] = valid_out.nonmanifold_edges;
@@ -359,7 +396,8 @@ void run_evaluate(EvaluateArguments args) {
         eval::compare_surfaces(input, input_samples, exact, args.surface);
     j["surface"] = {{"output", to_json(surface_out)}, {"input", to_json(surface_in)}};
     if (reference.csg) {
-        j["cad"] = cad_block(reference, input, output, surface_in, surface_out, args.cad);
+        j["cad"] = cad_block(reference, input, output, restored.segmentation, surface_in,
+                             surface_out, args.cad);
     }
 
     j["settings"] = {{"h_mm", h},

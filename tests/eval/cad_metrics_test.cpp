@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cube_creases.h"
 #include "resharp/core/errors.h"
 #include "resharp/eval/exact_creases.h"
 #include "support/simple_meshes.h"
@@ -15,14 +16,7 @@ namespace {
 constexpr double kSide = 10.0;
 const double kDiagonal = kSide * std::sqrt(3.0);
 
-/// The true sharp edges of the cube [0, kSide]^3.
-CurveSamples cube_creases() {
-    sim::CsgNode node;
-    node.shape = sim::BoxShape{Vec3::Zero(), Vec3::Constant(kSide)};
-    const sim::CsgSolid cube(node);
-    return sample_exact_creases(
-        cube, sim::sample_solid(sim::phased_grid(cube.bounds(), 0.05, 0.4142), cube));
-}
+CurveSamples cube_creases() { return test::cube_creases(kSide); }
 
 /// The convex polytope with these outward face normals around `vertices`: each face is the
 /// vertices on its support plane, fanned in counter-clockwise order about the normal.

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -107,6 +108,35 @@ TEST(NearSurface, ExactModeMovesNothing) {
     EXPECT_EQ(r.report.moved_vertices, 0u);
     EXPECT_TRUE(
         std::equal(input.positions.begin(), input.positions.end(), r.mesh.positions.begin()));
+}
+
+TEST(NearSurface, KeepsWhatBecameOfThePointsAndMoves) {
+    const Case c{SmallPart::PocketedBlock, sim::Mesher::SurfaceNets, VertexMode::Near};
+    const Mesh input = test::small_part(c.part, 0.5, c.mesher);
+    RestoreOptions o = near_options(c);
+    o.keep_segmentation = true;
+    const RestoreResult r = restore(input, o);
+    const Segmentation& s = r.segmentation;
+    ASSERT_EQ(s.point_fate.size(), input.face_count());
+    ASSERT_EQ(s.move_planned.size(), input.vertex_count());
+    // Every moved vertex was planned; every face cut into pieces with a new point is Inserted,
+    // and only band faces have a fate.
+    for (Index v = 0; v < input.vertex_count(); ++v) {
+        if (r.mesh.positions[v] != input.positions[v]) EXPECT_TRUE(s.move_planned[v]) << v;
+    }
+    std::size_t inserted = 0;
+    for (Index f = 0; f < input.face_count(); ++f) {
+        inserted += s.point_fate[f] == PointFate::Inserted;
+        EXPECT_EQ(s.point_fate[f] == PointFate::None, s.face_role[f] == BandRole::None) << f;
+    }
+    for (Index o_face = 0; o_face < r.mesh.face_count(); ++o_face) {
+        const Triangle& t = r.mesh.triangles[o_face];
+        const bool has_new =
+            std::any_of(t.begin(), t.end(), [&](Index v) { return v >= input.vertex_count(); });
+        if (has_new) EXPECT_EQ(s.point_fate[r.source_face[o_face]], PointFate::Inserted);
+    }
+    EXPECT_GT(inserted, 0u);
+    EXPECT_EQ(r.report.edge_points_inserted + r.report.corner_points_inserted > 0, inserted > 0);
 }
 
 }  // namespace

@@ -24,8 +24,11 @@ double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
     return (a + s * ab - p).norm();
 }
 
-/// Distance from every sample of `from` to the nearest piece of `to` (non-empty).
-std::vector<double> distances_to_pieces(const CurveSamples& from, const CurveSamples& to) {
+}  // namespace
+
+std::vector<double> crease_distances(const CurveSamples& from, const CurveSamples& to) {
+    if (to.size() == 0)
+        return std::vector<double>(from.size(), std::numeric_limits<double>::infinity());
     const auto end = [&](std::size_t k, double side) {
         return Vec3(to.points[k] + side * to.half_spans[k] * to.tangents[k]);
     };
@@ -45,6 +48,8 @@ std::vector<double> distances_to_pieces(const CurveSamples& from, const CurveSam
     });
     return d;
 }
+
+namespace {
 
 /// Weighted mean of f(d) over the samples.
 template <class F>
@@ -93,6 +98,7 @@ CurveSamples sample_mesh_creases(const Mesh& mesh, double sharp_angle_deg, doubl
             s.tangents.push_back(tangent);
             s.weights.push_back(length / pieces);
             s.half_spans.push_back(0.5 * length / pieces);
+            s.half_edges.push_back(h);
         }
     }
     return s;
@@ -121,8 +127,8 @@ CreaseMetrics compare_creases(const CurveSamples& exact, const CurveSamples& mes
         m.stray_length = m.mesh_length;
         return m;
     }
-    std::vector<double> from_exact = distances_to_pieces(exact, mesh);
-    std::vector<double> from_mesh = distances_to_pieces(mesh, exact);
+    std::vector<double> from_exact = crease_distances(exact, mesh);
+    std::vector<double> from_mesh = crease_distances(mesh, exact);
     for (double& d : from_exact) d /= o.unit;
     for (double& d : from_mesh) d /= o.unit;
     const auto square = [](double d) { return d * d; };

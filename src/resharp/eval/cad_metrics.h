@@ -29,6 +29,9 @@ struct CurveSamples {
     std::vector<Vec3> tangents;      ///< #C unit tangents
     std::vector<double> weights;     ///< #C length of curve each sample stands for, mm
     std::vector<double> half_spans;  ///< #C half the length of its piece, mm
+    /// #C for a mesh's creases (sample_mesh_creases()): the half-edge each piece lies on; empty
+    /// for curves.
+    std::vector<Index> half_edges;
     std::size_t size() const { return points.size(); }
     /// Sum of the weights, mm.
     double total_length() const;
@@ -39,6 +42,10 @@ struct CurveSamples {
 /// sample per piece at its middle, weight and span the piece's length.
 /// \throws InvalidInput if spacing is not positive.
 CurveSamples sample_mesh_creases(const Mesh& mesh, double sharp_angle_deg, double spacing);
+
+/// Distance (mm) from every sample of `from` to the nearest piece of `to`; infinity for all
+/// when `to` is empty. Runs on all cores.
+std::vector<double> crease_distances(const CurveSamples& from, const CurveSamples& to);
 
 struct CreaseMetricsOptions {
     double tolerance = 1e-3;  ///< τ of the Edge F-score, in units of `unit`

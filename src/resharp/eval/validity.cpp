@@ -71,6 +71,12 @@ MeshValidity check_validity(const Mesh& mesh) {
 
 std::size_t count_flipped_faces(const Mesh& input, const Mesh& output, const Oracle& oracle,
                                 const SurfaceSamples& exact, FlipScope scope) {
+    const std::vector<std::uint8_t> flipped = flipped_faces(input, output, oracle, exact, scope);
+    return static_cast<std::size_t>(std::count(flipped.begin(), flipped.end(), 1));
+}
+
+std::vector<std::uint8_t> flipped_faces(const Mesh& input, const Mesh& output, const Oracle& oracle,
+                                        const SurfaceSamples& exact, FlipScope scope) {
     check_output_extends_input(input, output);
     if (oracle.normals.size() != input.vertex_count()) {
         throw InvalidInput("the oracle does not have one normal per input vertex");
@@ -94,8 +100,9 @@ std::size_t count_flipped_faces(const Mesh& input, const Mesh& output, const Ora
         return !oracle.surface_points.empty() &&
                (input.positions[v] - oracle.surface_points[v]).norm() > off_distance;
     };
-    std::size_t flipped = 0;
-    for (const Triangle& t : output.triangles) {
+    std::vector<std::uint8_t> flipped(output.face_count(), 0);
+    for (Index f = 0; f < output.face_count(); ++f) {
+        const Triangle& t = output.triangles[f];
         if (scope == FlipScope::ChangedFaces && input_faces.count(sorted(t))) continue;
         const Vec3 &a = output.positions[t[0]], &b = output.positions[t[1]],
                    &c = output.positions[t[2]];
@@ -116,7 +123,7 @@ std::size_t count_flipped_faces(const Mesh& input, const Mesh& output, const Ora
                     .first;
             is_flipped = n.dot(exact.normals[s]) <= 0.0;
         }
-        flipped += is_flipped;
+        flipped[f] = is_flipped;
     }
     return flipped;
 }

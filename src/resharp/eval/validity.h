@@ -3,6 +3,8 @@
 /// self-intersecting triangles, smallest angle.
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "resharp/eval/ideal_points.h"
 #include "resharp/eval/surface_samples.h"
@@ -42,5 +44,9 @@ enum class FlipScope {
 /// does not have one normal per input vertex.
 std::size_t count_flipped_faces(const Mesh& input, const Mesh& output, const Oracle& oracle,
                                 const SurfaceSamples& exact, FlipScope scope);
+
+/// As count_flipped_faces(), per output face (#F out): 1 where it is counted.
+std::vector<std::uint8_t> flipped_faces(const Mesh& input, const Mesh& output, const Oracle& oracle,
+                                        const SurfaceSamples& exact, FlipScope scope);
 
 }  // namespace resharp::eval

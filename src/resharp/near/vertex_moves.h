@@ -4,8 +4,9 @@
 /// the patch's own vertices around it show that surface (a fitted plane), and only within what
 /// its mesher could have got wrong: a midpoint vertex along its own grid edge (the true crossing
 /// lies on that edge), a cell-mean vertex within its own cell. A band vertex goes onto the
-/// nearest of the sides around it, where that side is part of the solid's boundary; the exact
-/// method of the paper then restores the band between the sides, its vertices now on them.
+/// side of its own patch, where that side is part of the solid's boundary next to the other
+/// sides around it; the exact method of the paper then restores the band between the sides, its
+/// vertices now on them.
 
 #include <cstddef>
 #include <cstdint>
@@ -62,9 +63,10 @@ struct MoveRule {
 /// Takes the mesh as it stands (`current`: positions, adjacency, normals), the input positions
 /// it came from (#V: what each vertex may move away from, by the rule), the feature patch of
 /// every vertex (#V, kNoIndex for none; Patches only) and the bands found (Patches only).
-/// Near: band vertices move by the shortest way onto a side that bounds the solid there, within
-/// their input cell (the others lie on their surface already, up to its curvature). Midpoint:
-/// every vertex with a plane around it moves along its input grid edge onto it, within the edge.
+/// Near: band vertices move by the shortest way onto the side of their own patch, where it
+/// bounds the solid next to the other sides and within their input cell (the others lie on
+/// their surface already, up to its curvature). Midpoint: every vertex with a plane of its own
+/// patch (or, Neighbourhood, around it) moves along its input grid edge onto it, within the edge.
 /// Exact: nothing moves. A vertex without a plane keeps its current position. Each vertex is
 /// decided alone, from the inputs only: the same on any number of threads. The result counts
 /// moves from the input positions.

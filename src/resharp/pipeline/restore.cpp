@@ -206,6 +206,27 @@ Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const Restor
     return d;
 }
 
+namespace {
+
+/// check_harm() of `split` (of `input`) against `input`, or against the reference input as
+/// moves_as_split() makes the split one of it.
+HarmReport held_against(const InputSurface& input, const HarmReference* reference,
+                        const SplitMesh& split, const RestoreOptions& options,
+                        std::span<const std::uint8_t> changed) {
+    if (!reference) {
+        HarmReport harm = check_harm(input, split, options.harm, changed);
+        RESHARP_EXPENSIVE_ASSERT(changed.empty() ||
+                                 harm.harmful_faces ==
+                                     check_harm(input, split, options.harm).harmful_faces);
+        return harm;
+    }
+    return check_harm(reference->input,
+                      moves_as_split(reference->input.mesh, reference->moves, split), options.harm,
+                      changed);
+}
+
+}  // namespace
+
 Detection detect_bands_after_moves(const Mesh& mesh, const Detection& before,
                                    const RestoreOptions& options) {
     Detection d;
@@ -219,8 +240,8 @@ Detection detect_bands_after_moves(const Mesh& mesh, const Detection& before,
 }
 
 BandRestoration restore_bands(const InputSurface& input, const BandClassification& bands,
-                              const FeatureNormals& feature_normals,
-                              const RestoreOptions& options) {
+                              const FeatureNormals& feature_normals, const RestoreOptions& options,
+                              const HarmReference* reference) {
     validate_options(options);
     BandRestoration r;
     StageClock clock(r.stage_time, options.stop);
@@ -264,18 +285,23 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
         clock.run(Stage::Split,
                   [&] { r.output = split_faces(input.mesh, r.points.points, checked.accepted); });
         HarmReport harm;
-        clock.run(Stage::HarmCheck, [&] {
-            harm = check_harm(input, r.output, options.harm, changed);
-            RESHARP_EXPENSIVE_ASSERT(changed.empty() ||
-                                     harm.harmful_faces ==
-                                         check_harm(input, r.output, options.harm).harmful_faces);
-        });
+        clock.run(Stage::HarmCheck,
+                  [&] { harm = held_against(input, reference, r.output, options, changed); });
         ++r.rounds;
         if (round == 0) r.first_harm = harm;
         if (harm.is_harmless()) {
             RESHARP_EXPENSIVE_ASSERT(is_sound_split(input, bands, r.output));
             RESHARP_EXPENSIVE_ASSERT(adds_no_open_or_nonmanifold_edge(input, r.output));
+            r.accepted = std::move(checked.accepted);
+            r.withdrawn = std::move(withdrawn);
             return r;
+        }
+        if (reference) {
+            // Harm on a face without points comes from the moves: only the caller can undo it.
+            for (Index f : harm.harmful_faces) {
+                if (!checked.accepted.has_points(f)) r.unexplained_harm.push_back(f);
+            }
+            if (!r.unexplained_harm.empty()) return r;
         }
         [[maybe_unused]] const std::size_t before = r.undone_points;
         withdrawn_before = withdrawn;
@@ -285,10 +311,32 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
     }
     r.rounds_exhausted = true;
     r.output = unchanged(input.mesh);
+    r.accepted = std::move(checked.accepted);
+    r.withdrawn = std::move(withdrawn);
     return r;
 }
 
 namespace {
+
+/// Per face (#F): how far the points of each edge or corner triangle got in `r`.
+std::vector<PointFate> point_fates(const BandClassification& bands, const BandRestoration& r) {
+    std::vector<PointFate> fate(bands.face_role.size(), PointFate::None);
+    const bool kept = !r.rounds_exhausted && r.unexplained_harm.empty();
+    for (Index f = 0; f < fate.size(); ++f) {
+        if (bands.face_role[f] == BandRole::None) continue;
+        bool candidate = false, withdrawn = false;
+        r.points.slots.for_each_point(f, [&](Index p) {
+            candidate = true;
+            withdrawn = withdrawn || (p < r.withdrawn.size() && r.withdrawn[p]);
+        });
+        const bool accepted = !r.accepted.corner_point.empty() && r.accepted.has_points(f);
+        fate[f] = accepted && kept        ? PointFate::Inserted
+                  : accepted || withdrawn ? PointFate::UndoneByHarm
+                  : candidate             ? PointFate::RefusedByGuard
+                                          : PointFate::NotPlaced;
+    }
+    return fate;
+}
 
 /// restore() on one mesh: the one place that sequences the stages and fills the report.
 class Pipeline {
@@ -368,17 +416,23 @@ private:
         take(restore_detected(mesh, detection, duplicates));
     }
 
-    /// Records what `detection` found on `mesh` and restores its bands; the segmentations go
-    /// first (nothing after reads them).
+    /// Records what `detection` found on `mesh` and restores its bands, the split held against
+    /// `reference` if given; the segmentations go first (nothing after reads them).
     BandRestoration restore_detected(const Mesh& mesh, Detection& detection,
-                                     const DuplicateFaces& duplicates) {
+                                     const DuplicateFaces& duplicates,
+                                     const HarmReference* reference = nullptr) {
         record(detection);
         if (options_.keep_segmentation) keep(detection, duplicates);
         // What the rest does not read goes before the rest allocates (peak memory).
         detection.edges = {};
         detection.features = {};
-        return restore_bands(detection.surface(mesh), detection.bands, detection.feature_normals,
-                             options_);
+        BandRestoration restored = restore_bands(detection.surface(mesh), detection.bands,
+                                                 detection.feature_normals, options_, reference);
+        if (options_.keep_segmentation) {
+            result_.segmentation.point_fate =
+                on_input_faces(point_fates(detection.bands, restored), duplicates, PointFate::None);
+        }
+        return restored;
     }
 
     void take(BandRestoration restored) {
@@ -437,25 +491,23 @@ private:
         std::optional<Detection> smoothed;
         VertexMoves moves = plan_moves(surface, input, choice, smoothed);
         const Detection& segmented = smoothed ? *smoothed : input;
+        if (options_.keep_segmentation) result_.segmentation.move_planned = moves.moved;
         for (int round = 0; round < options_.max_harm_rounds && moves.moved_count > 0; ++round) {
             ++report_.move_rounds;
             const Mesh moved = moved_mesh(mesh, moves);
             Detection detection = detect_bands_after_moves(moved, segmented, options_);
             add_times(detection.stage_time);
-            BandRestoration restored = restore_detected(moved, detection, duplicates);
-            HarmReport harm;
-            StageClock(report_.stage_time, options_.stop).run(Stage::HarmCheck, [&] {
-                harm = check_harm(surface, moves_as_split(mesh, moves, restored.output),
-                                  options_.harm);
-            });
-            if (harm.is_harmless()) {
+            const HarmReference reference{surface, moves};
+            BandRestoration restored = restore_detected(moved, detection, duplicates, &reference);
+            if (restored.rounds_exhausted) break;  // its unchanged moved mesh was not checked
+            if (restored.unexplained_harm.empty()) {
                 take(std::move(restored));
                 report_.output_unchanged = false;  // the moves changed it, points or not
                 report_.moved_vertices = moves.moved_count;
                 report_.largest_move = moves.largest_move;
                 return;
             }
-            VertexMoves fewer = without_moves_of(mesh, moves, harm.harmful_faces);
+            VertexMoves fewer = without_moves_of(mesh, moves, restored.unexplained_harm);
             if (fewer.moved_count == moves.moved_count) break;  // harm no move explains
             report_.moves_undone += moves.moved_count - fewer.moved_count;
             moves = std::move(fewer);
@@ -472,17 +524,20 @@ private:
         Segmentation& s = result_.segmentation;
         s.is_edge_vertex = d.edges.is_edge;
         s.vertex_patch = d.features.vertex_patch;
-        if (duplicates.removed == 0) {
-            s.face_patch = d.features.face_patch;
-            s.face_role = d.bands.face_role;
-            return;
-        }
-        s.face_patch.assign(input_.face_count(), kNoIndex);
-        s.face_role.assign(input_.face_count(), BandRole::None);
-        for (std::size_t i = 0; i < duplicates.kept.size(); ++i) {
-            s.face_patch[duplicates.kept[i]] = d.features.face_patch[i];
-            s.face_role[duplicates.kept[i]] = d.bands.face_role[i];
-        }
+        s.face_patch = on_input_faces(d.features.face_patch, duplicates, kNoIndex);
+        s.face_role = on_input_faces(d.bands.face_role, duplicates, BandRole::None);
+    }
+
+    /// Per-face values of the mesh restored (#F less removed duplicates) on the input's faces;
+    /// `none` on the removed ones.
+    template <class T>
+    std::vector<T> on_input_faces(std::vector<T> values, const DuplicateFaces& duplicates,
+                                  T none) const {
+        if (duplicates.removed == 0) return values;
+        std::vector<T> all(input_.face_count(), none);
+        for (std::size_t i = 0; i < duplicates.kept.size(); ++i)
+            all[duplicates.kept[i]] = values[i];
+        return all;
     }
 
     void record(const Detection& d) {

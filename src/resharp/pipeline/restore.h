@@ -11,6 +11,7 @@
 #include "resharp/mesh/connectivity.h"
 #include "resharp/mesh/geometry.h"
 #include "resharp/mesh/mesh.h"
+#include "resharp/near/vertex_moves.h"
 #include "resharp/pipeline/options.h"
 #include "resharp/pipeline/report.h"
 #include "resharp/restoration/band_classification.h"
@@ -22,12 +23,27 @@
 
 namespace resharp {
 
-/// What both segmentations found, on the input mesh's elements.
+/// How far the sharp points of an edge or corner triangle got (restore_bands()), the first
+/// stage that stopped them; what the evaluation's diagnosis reads (eval/crease_losses.h).
+enum class PointFate : std::uint8_t {
+    None,            ///< not an edge or corner triangle
+    NotPlaced,       ///< no candidate: the flip or spike test refused it, or a normal was missing
+    RefusedByGuard,  ///< every candidate refused by the guard
+    UndoneByHarm,    ///< accepted by the guard, then withdrawn by the harm check
+    Inserted,        ///< a point of it is in the output
+};
+
+/// What both segmentations found, on the input mesh's elements, and what became of the points
+/// and moves planned on them.
 struct Segmentation {
     std::vector<std::uint8_t> is_edge_vertex;  ///< per input vertex (#V): edge-based result, §3
-    std::vector<Index> vertex_patch;  ///< per input vertex (#V): feature patch, or kNoIndex
-    std::vector<Index> face_patch;    ///< per input face (#F): feature patch, kNoIndex in bands
-    std::vector<BandRole> face_role;  ///< per input face (#F): edge or corner triangle
+    std::vector<Index> vertex_patch;    ///< per input vertex (#V): feature patch, or kNoIndex
+    std::vector<Index> face_patch;      ///< per input face (#F): feature patch, kNoIndex in bands
+    std::vector<BandRole> face_role;    ///< per input face (#F): edge or corner triangle
+    std::vector<PointFate> point_fate;  ///< per input face (#F)
+    /// Per input vertex (#V): 1 where the near path planned a move (kept or undone); empty on
+    /// the exact path.
+    std::vector<std::uint8_t> move_planned;
 };
 
 struct RestoreResult {
@@ -87,8 +103,14 @@ Detection detect_bands_after_moves(const Mesh& mesh, const Detection& before,
 /// harm, until a round finds none (at most options.max_harm_rounds rounds; each round but the
 /// first has at least one point fewer, so also at most one round more than points).
 struct BandRestoration {
-    SplitMesh output;       ///< the last round's split; the input itself when given up
-    SharpPoints points;     ///< the placed candidates
+    SplitMesh output;     ///< the last round's split; the input itself when given up
+    SharpPoints points;   ///< the placed candidates
+    PointSlots accepted;  ///< the last round's guarded slots, the points `output` holds
+    std::vector<std::uint8_t> withdrawn;  ///< per candidate (#P): withdrawn by the harm check
+    /// With a HarmReference: the harmful faces of the last round that hold no point to withdraw
+    /// (their harm comes from the moves). Not empty: the output is not harmless, and the caller
+    /// gives up those faces' moves.
+    std::vector<Index> unexplained_harm;
     GuardReport guard;      ///< summed over the rounds
     HarmReport first_harm;  ///< what the first round's check found
     std::size_t rounds = 0;
@@ -97,10 +119,22 @@ struct BandRestoration {
     std::array<std::chrono::nanoseconds, kStageCount> stage_time{};  ///< of the stages run
 };
 
-/// Takes the input surface, its bands and the feature normals (#V) to place points with.
+/// What restore_bands() holds its split against when that is not the surface it splits: the
+/// input whose vertices were moved to make that surface, and the moves (near-surface
+/// restoration). The split is checked as moves_as_split() makes it a split of the input.
+struct HarmReference {
+    const InputSurface& input;
+    const VertexMoves& moves;
+};
+
+/// Takes the surface to split, its bands and the feature normals (#V) to place points with, and
+/// optionally the surface to check the split against (null: `input` itself). With a
+/// reference, a round whose harmful faces are not all faces with points ends the rounds and
+/// names them in `unexplained_harm`.
 /// \throws Cancelled when options.stop fires between two rounds; InvalidInput for options out
 ///         of range.
 BandRestoration restore_bands(const InputSurface& input, const BandClassification& bands,
-                              const FeatureNormals& feature_normals, const RestoreOptions& options);
+                              const FeatureNormals& feature_normals, const RestoreOptions& options,
+                              const HarmReference* reference = nullptr);
 
 }  // namespace resharp
