@@ -32,20 +32,6 @@ RestoreOptions near_options(const Case& c) {
     return o;
 }
 
-/// The distance from p to the part's surface along the nearest of the three axis lines
-/// through p (exact where that surface is a plane across the axis).
-double axis_distance(const sim::CsgSolid& solid, const Vec3& p) {
-    double nearest = std::numeric_limits<double>::infinity();
-    std::vector<sim::Interval> intervals;
-    for (int axis = 0; axis < 3; ++axis) {
-        intervals.clear();
-        solid.intersect_line(p, Vec3::Unit(axis), intervals);
-        for (const sim::Interval& i : intervals)
-            nearest = std::min({nearest, std::abs(i.enter.t), std::abs(i.exit.t)});
-    }
-    return nearest;
-}
-
 class NearSurface : public ::testing::TestWithParam<Case> {};
 
 TEST_P(NearSurface, DoesNoHarmAndMovesWithinTheCells) {
@@ -86,8 +72,8 @@ TEST_P(NearerTheSurface, ThanTheExactPath) {
     // Over the input's vertices, where both outputs have them.
     double exact_sum = 0.0, near_sum = 0.0;
     for (std::size_t v = 0; v < input.vertex_count(); ++v) {
-        exact_sum += axis_distance(solid, as_exact.mesh.positions[v]);
-        near_sum += axis_distance(solid, as_near.mesh.positions[v]);
+        exact_sum += test::distance_along_lines(solid, as_exact.mesh.positions[v]);
+        near_sum += test::distance_along_lines(solid, as_near.mesh.positions[v]);
     }
     EXPECT_LT(near_sum, 0.8 * exact_sum);
 }

@@ -1,6 +1,9 @@
 #include "support/small_parts.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numbers>
 #include <utility>
 
@@ -94,6 +97,25 @@ Mesh small_part(SmallPart part, double pitch, sim::Mesher mesher) {
     const sim::DexelGrid grid =
         sim::sample_solid(small_part_grid(part, pitch), small_part_solid(part));
     return sim::mesh_dexels(grid, {.mesher = mesher}).mesh;
+}
+
+double distance_along_lines(const sim::CsgSolid& solid, const Vec3& p) {
+    const std::array<Vec3, 7> directions{Vec3::UnitX(),
+                                         Vec3::UnitY(),
+                                         Vec3::UnitZ(),
+                                         Vec3(1, 1, 1) / std::sqrt(3.0),
+                                         Vec3(1, 1, -1) / std::sqrt(3.0),
+                                         Vec3(1, -1, 1) / std::sqrt(3.0),
+                                         Vec3(-1, 1, 1) / std::sqrt(3.0)};
+    double nearest = std::numeric_limits<double>::infinity();
+    std::vector<sim::Interval> intervals;
+    for (const Vec3& direction : directions) {
+        intervals.clear();
+        solid.intersect_line(p, direction, intervals);
+        for (const sim::Interval& i : intervals)
+            nearest = std::min({nearest, std::abs(i.enter.t), std::abs(i.exit.t)});
+    }
+    return nearest;
 }
 
 }  // namespace resharp::test

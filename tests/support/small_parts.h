@@ -38,4 +38,10 @@ Mesh small_part(SmallPart part, double pitch = 0.5,
 sim::CsgSolid small_part_solid(SmallPart part);
 sim::GridSpec small_part_grid(SmallPart part, double pitch = 0.5);
 
+/// The distance from p to the solid's surface along the nearest of seven lines through p: the
+/// three axes (exact where that surface is a plane across the axis) and the four body diagonals
+/// (so that a point on an edge or corner of faces along the axes, which the axis lines only
+/// graze, is at 0). Infinite if no line meets the solid.
+double distance_along_lines(const sim::CsgSolid& solid, const Vec3& p);
+
 }  // namespace resharp::test

@@ -4,8 +4,10 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 
 #include "resharp/core/errors.h"
@@ -80,6 +82,8 @@ public:
 
     /// Where v goes, or none if it stays.
     std::optional<Vec3> target(Index v, Scratch& scratch) const {
+        if (rule_.scope == FitScope::Patches && is_between_patches(v))
+            return point_on_junction(v, scratch);
         if (rule_.scope == FitScope::Patches && !may_move(v)) return std::nullopt;
         gather_rings(current_.mesh, current_.connectivity, v, options_.fit_rings, scratch);
         std::array<Side, kMaxSides> sides;
@@ -95,6 +99,61 @@ private:
     bool may_move(Index v) const {
         return vertex_patch_[v] != kNoIndex &&
                (in_band_[v] || rule_.placement == VertexPlacement::Midpoint);
+    }
+
+    /// Whether v is a near vertex that segmentation left in a band: no patch of its own.
+    bool is_between_patches(Index v) const {
+        return rule_.placement == VertexPlacement::Near && vertex_patch_[v] == kNoIndex;
+    }
+
+    /// Where the planes of the two or three patches around v meet (the sharp edge or corner
+    /// between them), at the point nearest v's current place; none unless each patch has a
+    /// plane its vertices scatter about by at most the junction scatter, each two planes part
+    /// by more than the junction angle, and the point lies within v's input cell. Dual meshers
+    /// place a vertex of the cell a sharp edge crosses between the faces, off both; the edge itself
+    /// is where it belongs (dual contouring's vertex).
+    std::optional<Vec3> point_on_junction(Index v, Scratch& scratch) const {
+        std::array<Index, kMaxSides> patches{};
+        const std::size_t count = add_ring_patches(v, patches, 0);
+        if (count < 2 || count > 3) return std::nullopt;
+        gather_rings(current_.mesh, current_.connectivity, v, options_.fit_rings, scratch);
+        std::array<Plane, 3> planes;
+        for (std::size_t i = 0; i < count; ++i) {
+            const std::optional<PlaneFit> fit = fit_side(patches[i], scratch);
+            if (!fit) return std::nullopt;
+            if (fit->rms_distance > options_.max_junction_scatter * rule_.grid.pitch || false)
+                return std::nullopt;
+            planes[i] = fit->plane;
+        }
+        const double max_cosine = std::cos(options_.junction_angle_deg * std::numbers::pi / 180.0);
+        for (std::size_t i = 0; i < count; ++i) {
+            for (std::size_t j = i + 1; j < count; ++j) {
+                if (planes[i].normal.dot(planes[j].normal) >= max_cosine) return std::nullopt;
+            }
+        }
+        const std::optional<Vec3> y =
+            nearest_on_all(current_.mesh.positions[v], std::span(planes.data(), count));
+        if (!y || !within_reach(input_[v], *y)) return std::nullopt;
+        return y;
+    }
+
+    /// The point on every one of two or three planes nearest x: x less the least change that
+    /// puts it on all, N^T (N N^T)^-1 (N x - d) for the planes' normals N and offsets d. None
+    /// where three normals do not span space (the Gram matrix is singular).
+    static std::optional<Vec3> nearest_on_all(const Vec3& x, std::span<const Plane> planes) {
+        const Eigen::Index k = static_cast<Eigen::Index>(planes.size());
+        Eigen::Matrix<double, Eigen::Dynamic, 3, 0, 3, 3> normals(k, 3);
+        Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1> excess(k);
+        for (Eigen::Index i = 0; i < k; ++i) {
+            normals.row(i) = planes[static_cast<std::size_t>(i)].normal.transpose();
+            excess[i] = planes[static_cast<std::size_t>(i)].signed_distance(x);
+        }
+        const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3> gram =
+            normals * normals.transpose();
+        // Unit normals: the Gram determinant is the squared volume (area) they span; the
+        // angle test above keeps two apart, three must not lie near one plane.
+        if (std::abs(gram.determinant()) < 1e-6) return std::nullopt;
+        return Vec3(x - normals.transpose() * gram.partialPivLu().solve(excess));
     }
 
     /// The sides of v's patches: its own first; for a band vertex the others around it too, and
@@ -128,9 +187,14 @@ private:
     /// v's own patch first, then (for a band vertex) the other patches of its ring's vertices,
     /// in the order met; at most kMaxSides.
     std::size_t patches_at(Index v, std::array<Index, kMaxSides>& patches) const {
-        std::size_t count = 0;
-        patches[count++] = vertex_patch_[v];
-        if (!in_band_[v]) return count;
+        patches[0] = vertex_patch_[v];
+        return in_band_[v] ? add_ring_patches(v, patches, 1) : 1;
+    }
+
+    /// patches[0, count) and then the other patches of v's ring's vertices, in the order met;
+    /// at most kMaxSides in all. Gives the count.
+    std::size_t add_ring_patches(Index v, std::array<Index, kMaxSides>& patches,
+                                 std::size_t count) const {
         for_each_ring_vertex(current_.mesh, current_.connectivity, v, [&](Index j) {
             const Index p = vertex_patch_[j];
             if (p == kNoIndex || count == kMaxSides) return;
@@ -272,10 +336,12 @@ void validate(const Grid& grid, const VertexMoveOptions& options) {
     if (!(grid.pitch > 0.0) || !std::isfinite(grid.pitch))
         throw InvalidInput("vertex moves: the grid pitch must be positive");
     if (options.fit_rings < 1 || options.fit_rings > 8 || options.min_fit_points < 3 ||
-        !(options.max_scatter_near >= 0.0) || !(options.max_scatter_midpoint >= 0.0))
+        !(options.max_scatter_near >= 0.0) || !(options.max_scatter_midpoint >= 0.0) ||
+        !(options.max_junction_scatter >= 0.0) ||
+        !(options.junction_angle_deg >= 0.0 && options.junction_angle_deg < 180.0))
         throw InvalidInput(
             "vertex moves: fit rings in [1, 8], at least 3 fit points, "
-            "scatter limits not negative");
+            "scatter limits not negative, junction angle in [0, 180)");
 }
 
 /// Sets moved, moved_count and largest_move from the positions against the input's.

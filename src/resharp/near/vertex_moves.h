@@ -33,6 +33,18 @@ struct VertexMoveOptions {
     /// pitch (rms pitch / sqrt(12) where the plane runs across the edges).
     double max_scatter_near = 0.1;
     double max_scatter_midpoint = 0.35;
+    /// A near vertex that segmentation left in a band with no patch of its own (the middle row
+    /// of a band two faces wide, as surface nets leave one in the cell a sharp edge crosses)
+    /// moves onto the junction of the planes of the two or three patches around it only where
+    /// each two of them part by more than this (degrees): a junction of planes this far apart
+    /// is a sharp edge or corner, not one face split in two by segmentation.
+    double junction_angle_deg = 20.0;
+    /// ... and only where the vertices of each of those patches scatter about its plane by at
+    /// most this (root mean square, in grid pitches). Cell means of crossings on a plane lie on
+    /// it to rounding; a fit that scatters more took in vertices off its face (a hole's rim),
+    /// and two such planes meet off the true edge by their error over the sine of their angle
+    /// (on the pocketed block of the tests, 0.02 to 0.1 pitch against 0 for the rest).
+    double max_junction_scatter = 0.01;
 };
 
 struct VertexMoves {
@@ -65,7 +77,9 @@ struct MoveRule {
 /// every vertex (#V, kNoIndex for none; Patches only) and the bands found (Patches only).
 /// Near: band vertices move by the shortest way onto the side of their own patch, where it
 /// bounds the solid next to the other sides and within their input cell (the others lie on
-/// their surface already, up to its curvature). Midpoint: every vertex with a plane of its own
+/// their surface already, up to its curvature); a vertex of no patch whose ring meets two or
+/// three patches moves onto where their planes meet (the sharp edge or corner), by the
+/// shortest way and within its input cell. Midpoint: every vertex with a plane of its own
 /// patch (or, Neighbourhood, around it) moves along its input grid edge onto it, within the edge.
 /// Exact: nothing moves. A vertex without a plane keeps its current position. Each vertex is
 /// decided alone, from the inputs only: the same on any number of threads. The result counts
