@@ -7,7 +7,11 @@
 
 #include <cstdint>
 #include <cstring>
+#include <memory>
+#include <new>
 #include <span>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "resharp/core/types.h"
@@ -31,15 +35,40 @@ enum class EdgeKind : unsigned char {
     Inconsistent,  ///< two faces share it running the same way (orientation flips here)
 };
 
+/// An allocator whose construction without a value leaves a trivial element as it is: for
+/// arrays that build_connectivity() sizes and then writes entry by entry, so that sizing them
+/// costs no pass of zeros over the memory (megabytes on a large mesh). Copies and values given
+/// are constructed as by std::allocator.
+template <class T>
+struct FillLaterAllocator : std::allocator<T> {
+    using std::allocator<T>::allocator;
+    template <class U>
+    struct rebind {
+        using other = FillLaterAllocator<U>;
+    };
+    template <class U>
+    void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+        ::new (static_cast<void*>(p)) U;
+    }
+    template <class U, class... Args>
+    void construct(U* p, Args&&... args) {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+};
+
+/// A std::vector that resize() leaves unwritten (FillLaterAllocator).
+template <class T>
+using FilledLater = std::vector<T, FillLaterAllocator<T>>;
+
 struct Connectivity {
     /// Per half-edge (#3F): the twin half-edge, or kNoIndex unless edge_kind is Manifold.
-    std::vector<Index> twin;
+    FilledLater<Index> twin;
     /// Per half-edge (#3F).
-    std::vector<EdgeKind> edge_kind;
+    FilledLater<EdgeKind> edge_kind;
     /// CSR offsets (#V + 1) into ring_faces.
     std::vector<Index> ring_offsets;
     /// Faces around each vertex (#3F in total), in increasing face order.
-    std::vector<Index> ring_faces;
+    FilledLater<Index> ring_faces;
 
     std::span<const Index> faces_around(Index v) const {
         return {ring_faces.data() + ring_offsets[v], ring_faces.data() + ring_offsets[v + 1]};
@@ -64,7 +93,7 @@ void for_each_ring_vertex(const Mesh& mesh, const Connectivity& connectivity, In
 template <class Visit>
 void for_each_halfedge_without_twin(const Connectivity& connectivity, Visit&& visit) {
     static_assert(static_cast<unsigned>(EdgeKind::Manifold) == 0 && sizeof(EdgeKind) == 1);
-    const std::vector<EdgeKind>& kind = connectivity.edge_kind;
+    const auto& kind = connectivity.edge_kind;
     const Index count = static_cast<Index>(kind.size());
     Index h = 0;
     for (; h + 8 <= count; h += 8) {  // Bound: count / 8 words
