@@ -7,13 +7,10 @@
 
 #include <cstdint>
 #include <cstring>
-#include <memory>
-#include <new>
 #include <span>
-#include <type_traits>
-#include <utility>
 #include <vector>
 
+#include "resharp/core/filled_later.h"
 #include "resharp/core/types.h"
 #include "resharp/mesh/mesh.h"
 
@@ -34,31 +31,6 @@ enum class EdgeKind : unsigned char {
     NonManifold,   ///< three or more faces share the edge
     Inconsistent,  ///< two faces share it running the same way (orientation flips here)
 };
-
-/// An allocator whose construction without a value leaves a trivial element as it is: for
-/// arrays that build_connectivity() sizes and then writes entry by entry, so that sizing them
-/// costs no pass of zeros over the memory (megabytes on a large mesh). Copies and values given
-/// are constructed as by std::allocator.
-template <class T>
-struct FillLaterAllocator : std::allocator<T> {
-    using std::allocator<T>::allocator;
-    template <class U>
-    struct rebind {
-        using other = FillLaterAllocator<U>;
-    };
-    template <class U>
-    void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
-        ::new (static_cast<void*>(p)) U;
-    }
-    template <class U, class... Args>
-    void construct(U* p, Args&&... args) {
-        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-    }
-};
-
-/// A std::vector that resize() leaves unwritten (FillLaterAllocator).
-template <class T>
-using FilledLater = std::vector<T, FillLaterAllocator<T>>;
 
 struct Connectivity {
     /// Per half-edge (#3F): the twin half-edge, or kNoIndex unless edge_kind is Manifold.
