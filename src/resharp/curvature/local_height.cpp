@@ -33,7 +33,9 @@ PrincipalCurvatures estimate_principal_curvatures(const Mesh& mesh,
                                                   const Connectivity& connectivity,
                                                   const std::vector<Vec3>& vertex_normals) {
     const std::size_t nv = mesh.vertex_count();
-    PrincipalCurvatures result{std::vector<double>(nv, 0.0), std::vector<double>(nv, 0.0)};
+    PrincipalCurvatures result;  // unwritten: the loop below writes every vertex's pair
+    result.k1.resize(nv);
+    result.k2.resize(nv);
     const double typical_length = median_edge_length(mesh);
     const double limit = typical_length > 0.0 ? 2.0 / typical_length : 0.0;
 
@@ -55,10 +57,9 @@ PrincipalCurvatures estimate_principal_curvatures(const Mesh& mesh,
                 lo = std::min(lo, kappa);
                 hi = std::max(hi, kappa);
             }
-            if (lo <= hi && !n.isZero(0.0)) {
-                result.k1[v] = lo;
-                result.k2[v] = hi;
-            }
+            const bool sampled = lo <= hi && !n.isZero(0.0);
+            result.k1[v] = sampled ? lo : 0.0;
+            result.k2[v] = sampled ? hi : 0.0;
         }
     });
     return result;

@@ -10,14 +10,15 @@
 
 #include <vector>
 
+#include "resharp/core/filled_later.h"
 #include "resharp/mesh/connectivity.h"
 #include "resharp/mesh/mesh.h"
 
 namespace resharp {
 
 struct PrincipalCurvatures {
-    std::vector<double> k1;  ///< per vertex (#V): smallest normal curvature sample, 1/length
-    std::vector<double> k2;  ///< per vertex (#V): largest, k1 <= k2
+    FilledLater<double> k1;  ///< per vertex (#V): smallest normal curvature sample, 1/length
+    FilledLater<double> k2;  ///< per vertex (#V): largest, k1 <= k2
 };
 
 /// Takes the mesh, its connectivity and unit vertex normals (#V, zero where undefined) and

@@ -17,7 +17,7 @@ void build_rings(const Mesh& mesh, Connectivity& c) {
         for (Index v : t) ++c.ring_offsets[v + 1];
     }
     for (std::size_t v = 0; v < nv; ++v) c.ring_offsets[v + 1] += c.ring_offsets[v];
-    c.ring_faces.resize(c.ring_offsets[nv]);
+    c.ring_faces.resize(c.ring_offsets[nv]);  // unwritten: the scatter below fills every entry
     std::vector<Index> fill(c.ring_offsets.begin(), c.ring_offsets.end() - 1);
     for (std::size_t f = 0; f < mesh.face_count(); ++f) {
         for (Index v : mesh.triangles[f]) c.ring_faces[fill[v]++] = static_cast<Index>(f);
@@ -95,20 +95,27 @@ EdgeKind kind_of_edge(std::span<const EdgeEntry> on_edge, Index low) {
 }
 
 /// Classifies the half-edges filed under one vertex: those with the same other vertex lie on one
-/// edge; exactly two running opposite ways are twins. Sorting the few entries by the other
+/// edge; exactly two running opposite ways are twins. Writes the kind and the twin (kNoIndex
+/// where none) of every one of them. Sorting the few entries by the other
 /// vertex puts each edge's half-edges side by side, which costs fewer (and better predicted)
 /// comparisons than counting every entry's partners among all the others.
-void link_edges_of(std::span<EdgeEntry> filed, Index low, std::vector<Index>& twin,
-                   std::vector<EdgeKind>& kind) {
+void link_edges_of(std::span<EdgeEntry> filed, Index low, FilledLater<Index>& twin,
+                   FilledLater<EdgeKind>& kind) {
     sort_by_other(filed);
     for (std::size_t first = 0, end = 0; first < filed.size(); first = end) {
         while (end < filed.size() && filed[end].other == filed[first].other) ++end;
         const std::span<const EdgeEntry> on_edge(filed.data() + first, end - first);
         const EdgeKind edge_kind = kind_of_edge(on_edge, low);
-        for (const EdgeEntry& e : on_edge) kind[halfedge_of(e)] = edge_kind;
         if (edge_kind == EdgeKind::Manifold) {
-            twin[halfedge_of(on_edge[0])] = halfedge_of(on_edge[1]);
-            twin[halfedge_of(on_edge[1])] = halfedge_of(on_edge[0]);
+            const Index a = halfedge_of(on_edge[0]), b = halfedge_of(on_edge[1]);
+            kind[a] = kind[b] = EdgeKind::Manifold;
+            twin[a] = b;
+            twin[b] = a;
+            continue;
+        }
+        for (const EdgeEntry& e : on_edge) {
+            kind[halfedge_of(e)] = edge_kind;
+            twin[halfedge_of(e)] = kNoIndex;
         }
     }
 }
@@ -142,8 +149,10 @@ Connectivity build_connectivity(const Mesh& mesh) {
     Connectivity c;
     build_rings(mesh, c);
     const std::size_t nh = 3 * mesh.face_count();
-    c.twin.assign(nh, kNoIndex);
-    c.edge_kind.assign(nh, EdgeKind::Boundary);
+    // Unwritten: every half-edge is filed under the lower of its two vertices (the face is in
+    // that vertex's ring), and link_edges_of() writes its kind and twin there.
+    c.twin.resize(nh);
+    c.edge_kind.resize(nh);
     tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(mesh.vertex_count()), 4096),
                       [&](const auto& range) {
                           std::vector<EdgeEntry> filed;

@@ -10,6 +10,7 @@
 #include <span>
 #include <vector>
 
+#include "resharp/core/filled_later.h"
 #include "resharp/core/types.h"
 #include "resharp/mesh/mesh.h"
 
@@ -33,13 +34,13 @@ enum class EdgeKind : unsigned char {
 
 struct Connectivity {
     /// Per half-edge (#3F): the twin half-edge, or kNoIndex unless edge_kind is Manifold.
-    std::vector<Index> twin;
+    FilledLater<Index> twin;
     /// Per half-edge (#3F).
-    std::vector<EdgeKind> edge_kind;
+    FilledLater<EdgeKind> edge_kind;
     /// CSR offsets (#V + 1) into ring_faces.
     std::vector<Index> ring_offsets;
     /// Faces around each vertex (#3F in total), in increasing face order.
-    std::vector<Index> ring_faces;
+    FilledLater<Index> ring_faces;
 
     std::span<const Index> faces_around(Index v) const {
         return {ring_faces.data() + ring_offsets[v], ring_faces.data() + ring_offsets[v + 1]};
@@ -64,7 +65,7 @@ void for_each_ring_vertex(const Mesh& mesh, const Connectivity& connectivity, In
 template <class Visit>
 void for_each_halfedge_without_twin(const Connectivity& connectivity, Visit&& visit) {
     static_assert(static_cast<unsigned>(EdgeKind::Manifold) == 0 && sizeof(EdgeKind) == 1);
-    const std::vector<EdgeKind>& kind = connectivity.edge_kind;
+    const auto& kind = connectivity.edge_kind;
     const Index count = static_cast<Index>(kind.size());
     Index h = 0;
     for (; h + 8 <= count; h += 8) {  // Bound: count / 8 words

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cfloat>
 #include <cmath>
 #include <complex>
@@ -299,19 +300,29 @@ std::vector<Lattice> coarse_lattices(const AxisValues& near, PitchScan& scan) {
     return out;
 }
 
+/// A fit_lattice() pass: the lattice fitted, and the largest distance from its line of a value
+/// the fit used (negative when it used none).
+struct LatticeFit {
+    Lattice lattice;
+    double widest = -1.0;
+};
+
 /// One least-squares pass: values within `reach` of the centre and within `band` of a line of
 /// `l` give the line number k; fits value = phase[a] + k * pitch (one pitch, a phase per axis).
-Lattice fit_lattice(const AxisValues& values, const Lattice& l, const Vec3& centre, double reach,
-                    double band) {
+LatticeFit fit_lattice(const AxisValues& values, const Lattice& l, const Vec3& centre, double reach,
+                       double band) {
     std::array<double, 3> sw{}, sk{}, sd{}, skk{}, skd{};
     Vec3 anchor;
+    double widest = -1.0;
     for (int a = 0; a < 3; ++a) {
         anchor[a] = l.phase[a] + round_half_away((centre[a] - l.phase[a]) / l.pitch) * l.pitch;
         for (const SharedValue& s : values[a]) {
             if (std::abs(s.value - centre[a]) > reach) continue;
             const double d = s.value - anchor[a];  // relative to the anchor: no cancellation
             const double k = round_half_away(d / l.pitch);
-            if (std::abs(d - k * l.pitch) > band) continue;
+            const double off = std::abs(d - k * l.pitch);
+            if (off > band) continue;
+            widest = std::max(widest, off);
             sw[a] += s.weight, sk[a] += s.weight * k, sd[a] += s.weight * d;
             skk[a] += s.weight * k * k, skd[a] += s.weight * k * d;
         }
@@ -322,12 +333,26 @@ Lattice fit_lattice(const AxisValues& values, const Lattice& l, const Vec3& cent
         num += skd[a] - sk[a] * sd[a] / sw[a];
         den += skk[a] - sk[a] * sk[a] / sw[a];
     }
-    Lattice out = l;
-    if (den > 0.0) out.pitch = num / den;  // else every axis has one line: keep the pitch
+    LatticeFit out{l, widest};
+    if (den > 0.0) out.lattice.pitch = num / den;  // else every axis has one line: keep the pitch
     for (int a = 0; a < 3; ++a) {
-        out.phase[a] = sw[a] > 0.0 ? anchor[a] + (sd[a] - out.pitch * sk[a]) / sw[a] : l.phase[a];
+        out.lattice.phase[a] =
+            sw[a] > 0.0 ? anchor[a] + (sd[a] - out.lattice.pitch * sk[a]) / sw[a] : l.phase[a];
     }
     return out;
+}
+
+/// A fit_lattice() pass: the lattice it was given, and what it gave.
+struct FitPass {
+    Lattice given;
+    LatticeFit fit;
+};
+
+/// Whether two lattices are the same bits (a fit of either computes the same).
+bool same_bits(const Lattice& x, const Lattice& y) {
+    const auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v); };
+    return bits(x.pitch) == bits(y.pitch) && bits(x.phase[0]) == bits(y.phase[0]) &&
+           bits(x.phase[1]) == bits(y.phase[1]) && bits(x.phase[2]) == bits(y.phase[2]);
 }
 
 /// The lattice refined over all values: the window doubles while the band around the lines stays
@@ -344,8 +369,24 @@ Lattice refine_lattice(const AxisValues& values, Lattice l, const Vec3& centre, 
         }
     }
     double band = 0.05 * l.pitch;
+    // Once the reach holds every value, a pass given the lattice an earlier pass was given
+    // computes what that one did (same lattice, same values, same sums) while the band, which
+    // only narrows, still keeps every value that one used. Rounding leaves the refinement on one
+    // lattice or alternating between two: such passes are taken from the last two computed.
+    std::array<std::optional<FitPass>, 2> recent;  // the last two passes over all values
     for (int pass = 0; pass < 128; ++pass) {
-        l = fit_lattice(values, l, centre, reach, std::max(band, 2.0 * tol));
+        const double used = std::max(band, 2.0 * tol);
+        const FitPass* again = nullptr;
+        for (const std::optional<FitPass>& r : recent) {
+            if (r && same_bits(r->given, l) && r->fit.widest <= used) again = &*r;
+        }
+        if (again) {
+            l = again->fit.lattice;
+        } else {
+            const LatticeFit fit = fit_lattice(values, l, centre, reach, used);
+            if (reach >= extent) recent = {FitPass{l, fit}, recent[0]};
+            l = fit.lattice;
+        }
         if (!(l.pitch > 0.0) || !std::isfinite(l.pitch)) break;
         if (reach < extent) {
             reach *= 2.0;

@@ -98,6 +98,12 @@ bool boxes_apart(const Box3& a, const Box3& b, double tolerance) {
     return false;
 }
 
+/// Whether two triangles have the same corners in the same order. (Triangle's operator==, a
+/// library memcmp call, costs several times this on the face of every run.)
+bool same_corners(const Triangle& a, const Triangle& b) {
+    return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
 /// What the checks found on one split face's pieces.
 struct FaceVerdict {
     std::uint32_t turned = 0, folded = 0, crossing = 0;
@@ -110,7 +116,6 @@ struct Scratch {
     std::vector<std::uint8_t> vertex_mark, face_mark;
     std::vector<Index> vertices, faces;
     std::vector<Box3> boxes;
-    Eigen::Matrix<double, Eigen::Dynamic, 3> normals;  ///< of the faces, a row each
     /// per face and piece of the split face judged: the piece turns against the face
     Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic> against;
     Scratch(std::size_t vertex_count, std::size_t face_count)
@@ -134,7 +139,8 @@ public:
         for (Index o = 0; o < count; ++o) {
             Index end = o + 1;
             while (end < count && source[end] == source[o]) ++end;
-            if (end == o + 1 && output.mesh.triangles[o] == input.triangles[source[o]]) continue;
+            if (end == o + 1 && same_corners(output.mesh.triangles[o], input.triangles[source[o]]))
+                continue;
             number_[source[o]] = static_cast<Index>(face_.size());
             face_.push_back(source[o]);
             first_output_.push_back(o);
@@ -398,24 +404,26 @@ private:
 
     /// Per piece of split face number i: whether it turns against one of the candidates (or
     /// has no area), the only case (a) has anything to measure; and in scratch.against, per
-    /// piece and candidate, whether it turns against that one (turns_against()). The
-    /// candidates' normals are laid out by coordinate first, so that each piece's test runs
-    /// down three arrays in vector registers (summed in the same order as Vec3::dot).
+    /// piece and candidate, whether it turns against that one (turns_against()). One pass over
+    /// the candidates, each normal read once for all the pieces (summed in the same order as
+    /// Vec3::dot).
     std::array<bool, 6> turning_against_some(Index i, Scratch& scratch) const {
-        const auto n = static_cast<Eigen::Index>(scratch.faces.size());
-        scratch.normals.resize(n, 3);
-        for (Eigen::Index j = 0; j < n; ++j) {
-            scratch.normals.row(j) = input_.normals.face[scratch.faces[j]].transpose();
-        }
-        scratch.against.resize(n, split_.piece_count(i));
+        const Index count = split_.piece_count(i);
+        scratch.against.resize(static_cast<Eigen::Index>(scratch.faces.size()), count);
+        std::array<Vec3, 6> m;
         std::array<bool, 6> some{};
-        for (Index k = 0; k < split_.piece_count(i); ++k) {
-            const Vec3& m = piece_normal_[split_.first_piece(i) + k];
-            scratch.against.col(k) =
-                (scratch.normals.col(0).array() * m.x() + scratch.normals.col(1).array() * m.y()) +
-                    scratch.normals.col(2).array() * m.z() <
-                -kRightAngleMargin;
-            some[k] = m.isZero(0.0) || scratch.against.col(k).any();
+        for (Index k = 0; k < count; ++k) {
+            m[k] = piece_normal_[split_.first_piece(i) + k];
+            some[k] = m[k].isZero(0.0);
+        }
+        for (std::size_t j = 0; j < scratch.faces.size(); ++j) {  // Bound: the two-ring's faces
+            const Vec3& g = input_.normals.face[scratch.faces[j]];
+            for (Index k = 0; k < count; ++k) {
+                const bool against =
+                    (g.x() * m[k].x() + g.y() * m[k].y()) + g.z() * m[k].z() < -kRightAngleMargin;
+                scratch.against(static_cast<Eigen::Index>(j), k) = against;
+                some[k] = some[k] || against;
+            }
         }
         return some;
     }
