@@ -9,6 +9,7 @@
 
 #include "resharp/core/assert.h"
 #include "resharp/core/errors.h"
+#include "resharp/mesh/geometry.h"
 #include "resharp/restoration/pieces.h"
 
 namespace resharp {
@@ -29,15 +30,27 @@ struct Reference {
 
 /// The vertex's feature normal, trusted to within its fit correction: on a curved feature the
 /// estimate is that much off, and a piece standing almost on edge to it may lean past the true
-/// surface (on planes the correction is zero). Where a vertex has no feature normal (all its
-/// faces lie in bands), its plain vertex normal, which leans towards the band by up to half
-/// the edge's angle: a piece must face within 60 degrees of it.
+/// surface (on planes the correction is zero). Where the fit was not trusted and eq. 5.1's
+/// normal kept, the fitted field still says how far the feature turns at the vertex, and
+/// eq. 5.1's normal is trusted to within its angle to the field's (on impeller a kept normal
+/// 2.8 degrees off the exact one let a piece turn against the surface with zero margin).
+/// Where a vertex has no feature normal (all its faces lie in bands), its plain vertex normal,
+/// which leans towards the band by up to half the edge's angle: a piece must face within 60
+/// degrees of it.
 struct ReferenceNormals {
     const FeatureNormals& feature;
     const std::vector<Vec3>& vertex;
     Reference at(Index v) const {
         if (feature.normal[v].isZero(0.0)) return {vertex[v], 30.0};
-        return {feature.normal[v], std::min<double>(feature.fit_correction_deg[v], 30.0)};
+        return {feature.normal[v], std::min(margin_deg(v), 30.0)};
+    }
+
+private:
+    double margin_deg(Index v) const {
+        const NormalField& field = feature.field(v);
+        if (field.n0.isZero(0.0) || field.n0 == feature.normal[v])
+            return feature.fit_correction_deg[v];
+        return angle_deg(field.n0, feature.normal[v]);
     }
 };
 
