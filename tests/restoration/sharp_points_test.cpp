@@ -101,15 +101,33 @@ TEST(SharpPoints, APointBeyondTheChordGoesInsideTheFaceThatHoldsIt) {
     for (Index id : ours.slots.edge_point) EXPECT_EQ(id, kNoIndex);
 }
 
-// Moved past face 0 as well (over neither face of the edge), the point has nowhere to go.
-TEST(SharpPoints, APointOverNeitherFaceIsRefused) {
+/// The strip past the edge with a0 moved so that neither face of a1-b0 holds its point.
+test::Strip strip_over_neither_face() {
     test::Strip s = test::make_strip_past_the_edge();
     s.mesh.positions[0] = Vec3(-0.3, 0, 1.4);  // face 0 now ends short of z = 0.75 near x = 0
     s.rebuild();
-    const SharpPoints points = test::points_on_edge_a1_b0(s);
+    return s;
+}
+
+// Over neither face of the edge nor any face around its ends, the point has nowhere to go.
+TEST(SharpPoints, APointOverNoFaceIsRefused) {
+    const SharpPoints points = test::points_on_edge_a1_b0(strip_over_neither_face());
     EXPECT_EQ(points.edge_points, 0u);
     EXPECT_EQ(points.face_points, 0u);
     EXPECT_EQ(points.refused_by_flip_test, 1u);
+}
+
+// An edge triangle around an end of the edge (b0 here) that lies under the point takes it.
+TEST(SharpPoints, APointOverAFaceAroundAnEndGoesInsideIt) {
+    test::Strip s = strip_over_neither_face();
+    s.mesh.positions.push_back(Vec3(0.5, -0.2, 0.5));
+    s.mesh.positions.push_back(Vec3(-0.1, -0.2, 1.5));
+    s.mesh.triangles.push_back({2, 4, 5});
+    s.rebuild();
+    const SharpPoints points = test::points_on_edge_a1_b0(s);
+    ASSERT_EQ(points.face_points, 1u);
+    EXPECT_EQ(points.slots.corner_point, (std::vector<Index>{kNoIndex, kNoIndex, 0}));
+    EXPECT_TRUE(points.points[0].isApprox(Vec3(0, 0, 0.75), 1e-15));
 }
 
 /// Two chamfer faces across the edge of a boss of radius 3 standing up to z = 0, moved by

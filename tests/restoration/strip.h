@@ -51,8 +51,7 @@ inline Strip make_strip_past_the_edge() {
 inline SharpPoints points_on_edge_a1_b0(const Strip& s, const SharpPointOptions& options = {}) {
     BandClassification bands;
     bands.is_crossing.assign(3 * s.mesh.face_count(), 0);
-    bands.face_role.assign(s.mesh.face_count(), BandRole::None);
-    bands.face_role[0] = bands.face_role[1] = BandRole::Edge;
+    bands.face_role.assign(s.mesh.face_count(), BandRole::Edge);  // every face of a strip
     for (Index h = 0; h < bands.is_crossing.size(); ++h) {
         const Index u = tail_vertex(s.mesh, h), v = head_vertex(s.mesh, h);
         if ((u == 1 && v == 2) || (u == 2 && v == 1)) bands.is_crossing[h] = 1;

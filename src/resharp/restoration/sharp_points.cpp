@@ -169,16 +169,30 @@ bool face_holds(const Mesh& mesh, Index f, const Vec3& p) {
     return b.cross(c).dot(n) > margin && c.cross(a).dot(n) > margin && a.cross(b).dot(n) > margin;
 }
 
-/// The face of crossing edge h (either side) that holds the edge's point x beyond its chord
-/// and may take it: no corner triangle (whose slot its corner point takes) and no other face
-/// point there already. kNoIndex if neither.
+/// Whether face f may take a point inside it: not a corner triangle (whose slot its corner
+/// point takes) and no other edge's point inside it already.
+bool may_take_point(const BandClassification& bands, const SharpPoints& out, Index f) {
+    return bands.face_role[f] != BandRole::Corner && out.slots.corner_point[f] == kNoIndex;
+}
+
+/// The face that holds the point x of crossing edge h, beyond the edge's chord, and may take it:
+/// a face of the edge, else an edge triangle around one of its ends (where the junction lies
+/// past an end almost on it, as at a scallop cusp; faces off the bands would take phantom points
+/// on coarse smooth surfaces, docs/method.md). kNoIndex if none. Looks at the two faces and the
+/// two ends' rings, each face once at most per ring.
 Index holding_face(const Mesh& mesh, const Connectivity& c, const BandClassification& bands,
                    const SharpPoints& out, Index h, const Vec3& x) {
     for (Index g : {h, c.twin[h]}) {
         const Index f = face_of(g);
-        if (bands.face_role[f] == BandRole::Corner || out.slots.corner_point[f] != kNoIndex)
-            continue;
-        if (face_holds(mesh, f, x)) return f;
+        if (may_take_point(bands, out, f) && face_holds(mesh, f, x)) return f;
+    }
+    for (Index end : {tail_vertex(mesh, h), head_vertex(mesh, h)}) {
+        for (Index f : c.faces_around(end)) {
+            if (f == face_of(h) || f == face_of(c.twin[h])) continue;
+            if (bands.face_role[f] != BandRole::None && may_take_point(bands, out, f) &&
+                face_holds(mesh, f, x))
+                return f;
+        }
     }
     return kNoIndex;
 }
@@ -283,8 +297,7 @@ void place_corner_points(const Mesh& mesh, const Connectivity& c,
 namespace {
 
 /// Invariant of the placement: edge points only on crossing edges, the same point on both
-/// half-edges; points inside faces only in corner triangles or faces of a crossing edge; every
-/// slot names an existing point.
+/// half-edges; every slot names an existing point.
 bool slots_follow_bands(const Connectivity& c, const BandClassification& bands,
                         const SharpPoints& p) {
     for (Index h = 0; h < p.slots.edge_point.size(); ++h) {
@@ -297,8 +310,7 @@ bool slots_follow_bands(const Connectivity& c, const BandClassification& bands,
     }
     for (Index f = 0; f < p.slots.corner_point.size(); ++f) {
         const Index id = p.slots.corner_point[f];
-        if (id != kNoIndex && (bands.face_role[f] == BandRole::None || id >= p.points.size()))
-            return false;
+        if (id != kNoIndex && id >= p.points.size()) return false;
     }
     return true;
 }
