@@ -58,7 +58,7 @@ OTHER_VALUES = {
     "unconfirmed_border_angle": (90.0, RELIEF),
     "smooth_border_angle": (30.0, RELIEF),
     "smooth_continuation_angle": (0.0, RELIEF),
-    "placement": ("second-order", BRACKET),
+    "placement": ("tangent-planes", BRACKET),
     "spike_angle": (75.0, BRACKET),
     "thin_angle": (60.0, RELIEF),
     "fold_angle": (120.0, BRACKET),

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "strip.h"
+
 namespace resharp {
 namespace {
 
@@ -78,6 +80,97 @@ TEST(CornerPoint, MeetsThreePlanes) {
     EXPECT_FALSE(corner_point(Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3(1, 0, 0),
                               Vec3(2, 0, 0), Vec3(1, 0, 0))
                      .has_value());
+}
+
+// a1 lies past the sharp edge: eq. 5.4 fails for a1-b0, and eq. 5.2 (the paper) refuses the
+// point; second-order placement puts it inside face 0, over which it lies, and leaves the edge
+// unsplit.
+TEST(SharpPoints, APointBeyondTheChordGoesInsideTheFaceThatHoldsIt) {
+    const test::Strip s = test::make_strip_past_the_edge();
+    const SharpPoints paper =
+        test::points_on_edge_a1_b0(s, {.placement = PointPlacement::TangentPlanes});
+    EXPECT_EQ(paper.edge_points, 0u);
+    EXPECT_EQ(paper.refused_by_flip_test, 1u);
+
+    const SharpPoints ours = test::points_on_edge_a1_b0(s);
+    ASSERT_EQ(ours.edge_points, 1u);
+    EXPECT_EQ(ours.face_points, 1u);
+    EXPECT_EQ(ours.refused_by_flip_test, 0u);
+    EXPECT_TRUE(ours.points[0].isApprox(Vec3(0, 0, 0.75), 1e-15));
+    EXPECT_EQ(ours.slots.corner_point, (std::vector<Index>{0, kNoIndex}));
+    for (Index id : ours.slots.edge_point) EXPECT_EQ(id, kNoIndex);
+}
+
+/// The strip past the edge with a0 moved so that neither face of a1-b0 holds its point.
+test::Strip strip_over_neither_face() {
+    test::Strip s = test::make_strip_past_the_edge();
+    s.mesh.positions[0] = Vec3(-0.3, 0, 1.4);  // face 0 now ends short of z = 0.75 near x = 0
+    s.rebuild();
+    return s;
+}
+
+// Over neither face of the edge nor any face around its ends, the point has nowhere to go.
+TEST(SharpPoints, APointOverNoFaceIsRefused) {
+    const SharpPoints points = test::points_on_edge_a1_b0(strip_over_neither_face());
+    EXPECT_EQ(points.edge_points, 0u);
+    EXPECT_EQ(points.face_points, 0u);
+    EXPECT_EQ(points.refused_by_flip_test, 1u);
+}
+
+// An edge triangle around an end of the edge (b0 here) that lies under the point takes it.
+TEST(SharpPoints, APointOverAFaceAroundAnEndGoesInsideIt) {
+    test::Strip s = strip_over_neither_face();
+    s.mesh.positions.push_back(Vec3(0.5, -0.2, 0.5));
+    s.mesh.positions.push_back(Vec3(-0.1, -0.2, 1.5));
+    s.mesh.triangles.push_back({2, 4, 5});
+    s.rebuild();
+    const SharpPoints points = test::points_on_edge_a1_b0(s);
+    ASSERT_EQ(points.face_points, 1u);
+    EXPECT_EQ(points.slots.corner_point, (std::vector<Index>{kNoIndex, kNoIndex, 0}));
+    EXPECT_TRUE(points.points[0].isApprox(Vec3(0, 0, 0.75), 1e-15));
+}
+
+/// Two chamfer faces across the edge of a boss of radius 3 standing up to z = 0, moved by
+/// `shift`: a0, a1 on the top, b0, b1 on the side, the crossing edge a1-b0; the side's feature
+/// normals carry the cylinder's normal field, so second-order placement solves for the point.
+test::Strip boss_strip(const Vec3& shift) {
+    const double r = 3.0;
+    test::Strip s;
+    const Vec3 b0(r, 0, -0.4), b1(r * std::cos(0.2), r * std::sin(0.2), -0.35);
+    s.mesh.positions = {Vec3(2.6, -0.3, 0) + shift, Vec3(2.6, 0.5, 0) + shift, b0 + shift,
+                        b1 + shift};
+    s.mesh.triangles = {{0, 2, 1}, {1, 2, 3}};
+    s.rebuild();
+    s.feature_normals.normal = {Vec3::UnitZ(), Vec3::UnitZ(), b0.normalized(),
+                                Vec3(b1.x(), b1.y(), 0).normalized()};
+    s.feature_normals.field_slot = {kNoIndex, kNoIndex, 0, 1};
+    for (Index v : {2, 3}) {
+        const Eigen::Matrix3d slope = Eigen::Vector3d(1 / r, 1 / r, 0).asDiagonal();
+        s.feature_normals.fields.push_back({s.feature_normals.normal[v], slope});
+    }
+    return s;
+}
+
+// The junction solve runs about the crossing edge's midpoint with tolerances in its length, so
+// the same part 1e4 mm from the origin takes the same steps and gives the same point, moved,
+// to far below the solver's tolerance (1e-9 of the edge, 7e-10 mm here): only the last bits of
+// the moved coordinates (2e-12 mm at 1e4 mm) differ.
+TEST(SharpPoints, SecondOrderPointMovesWithThePart) {
+    const SharpPoints base = test::points_on_edge_a1_b0(boss_strip(Vec3::Zero()));
+    ASSERT_EQ(base.edge_points, 1u);
+    ASSERT_EQ(base.first_order_fallbacks, 0u);
+    const test::Strip origin = boss_strip(Vec3::Zero());
+    const auto first_order = edge_point(origin.mesh.positions[1], Vec3::UnitZ(),
+                                        origin.mesh.positions[2], origin.feature_normals.normal[2]);
+    ASSERT_TRUE(first_order);
+    EXPECT_GT((base.points[0] - *first_order).norm(), 1e-3);  // the solve moved it
+    for (const Vec3& shift : {Vec3(1e4, 1e4, 1e4), Vec3(-3.3e3, 7.1e2, 1e4)}) {
+        SCOPED_TRACE(shift.x());
+        const SharpPoints moved = test::points_on_edge_a1_b0(boss_strip(shift));
+        ASSERT_EQ(moved.edge_points, 1u);
+        EXPECT_EQ(moved.slots.edge_point, base.slots.edge_point);
+        EXPECT_LT((moved.points[0] - shift - base.points[0]).norm(), 2e-11);
+    }
 }
 
 }  // namespace

@@ -48,5 +48,28 @@ TEST(Split, ACornerPointFansItsFace) {
     EXPECT_EQ(out.point_of_new_vertex, (std::vector<Index>{0, 1}));
 }
 
+// Second-order placement puts a point beyond its edge's chord inside the face that holds it;
+// the split fans that face around it and leaves the edge and the face across it whole.
+TEST(Split, APointBeyondTheChordFansTheFaceThatHoldsIt) {
+    const test::Strip s = test::make_strip_past_the_edge();
+    const SharpPoints points = test::points_on_edge_a1_b0(s);
+    ASSERT_EQ(points.face_points, 1u);
+    ASSERT_EQ(points.slots.corner_point[0], 0u);
+    const SplitMesh out = split_faces(s.mesh, points.points, points.slots);
+    EXPECT_EQ(out.source_face, (std::vector<Index>{0, 0, 0, 1}));
+    EXPECT_EQ(out.mesh.triangles[3], s.mesh.triangles[1]);
+    ASSERT_EQ(out.mesh.vertex_count(), 5u);
+    EXPECT_TRUE(out.mesh.positions[4].isApprox(Vec3(0, 0, 0.75), 1e-15));
+    // Each piece keeps face 0's orientation.
+    const auto& x = s.mesh.positions;
+    const Triangle& f = s.mesh.triangles[0];
+    const Vec3 face_normal = triangle_normal(x[f[0]], x[f[1]], x[f[2]]);
+    for (Index i = 0; i < 3; ++i) {
+        const Triangle& t = out.mesh.triangles[i];
+        const auto& y = out.mesh.positions;
+        EXPECT_GT(triangle_normal(y[t[0]], y[t[1]], y[t[2]]).dot(face_normal), 0.0);
+    }
+}
+
 }  // namespace
 }  // namespace resharp

@@ -37,17 +37,27 @@ inline Strip make_strip() {
     return s;
 }
 
-/// The point of the crossing edge a1-b0, placed by eq. 5.2 with the exact normals.
-inline SharpPoints points_on_edge_a1_b0(const Strip& s) {
+/// The strip with a1 moved past the sharp edge, onto the top plane's continuation (a vertex
+/// beyond a cusp): eq. 5.4 fails for a1-b0, and the ideal point (0, 0, 0.75) lies over face 0.
+inline Strip make_strip_past_the_edge() {
+    Strip s = make_strip();
+    s.mesh.positions[1] = Vec3(0.05, 0, 1);
+    s.rebuild();
+    return s;
+}
+
+/// The point of the crossing edge a1-b0, placed with the exact normals (eq. 5.2 on these
+/// planes).
+inline SharpPoints points_on_edge_a1_b0(const Strip& s, const SharpPointOptions& options = {}) {
     BandClassification bands;
     bands.is_crossing.assign(3 * s.mesh.face_count(), 0);
-    bands.face_role.assign(s.mesh.face_count(), BandRole::None);
-    bands.face_role[0] = bands.face_role[1] = BandRole::Edge;
+    bands.face_role.assign(s.mesh.face_count(), BandRole::Edge);  // every face of a strip
     for (Index h = 0; h < bands.is_crossing.size(); ++h) {
         const Index u = tail_vertex(s.mesh, h), v = head_vertex(s.mesh, h);
         if ((u == 1 && v == 2) || (u == 2 && v == 1)) bands.is_crossing[h] = 1;
     }
-    return place_sharp_points(s.mesh, s.connectivity, s.normals.face, bands, s.feature_normals);
+    return place_sharp_points(s.mesh, s.connectivity, s.normals.face, bands, s.feature_normals,
+                              options);
 }
 
 }  // namespace resharp::test

@@ -77,6 +77,9 @@ ExactNormalRestoration restore_with_exact_normals(const Mesh& mesh, const Oracle
         if (d.feature_normals.normal[v].isZero(0.0)) continue;
         d.feature_normals.normal[v] = oracle.normals[v];
         d.feature_normals.fit_correction_deg[v] = 0.0f;  // exact normals need no margin
+        // Nor a fitted field: its shape is not the exact surface's, and the guard would take its
+        // angle to the exact normal as a margin.
+        if (!d.feature_normals.field_slot.empty()) d.feature_normals.field_slot[v] = kNoIndex;
     }
     BandRestoration restored = restore_bands(d.surface(mesh), d.bands, d.feature_normals, options);
     return {std::move(restored.output.mesh),

@@ -111,9 +111,10 @@ const std::array<OptionInfo, 26> kTable{{
      true},
     {"placement",
      "new points where the band's sides meet: 'tangent-planes' is eq. 5.2 / 5.3 as the paper; "
-     "'second-order' meets their fitted curved surfaces, on the edge of a hole or a scallop "
-     "(not yet the default: docs/method.md)",
-     ChoiceField<PointPlacement>{&nested<&R::points, &SharpPointOptions::placement>, kPlacements}},
+     "'second-order' meets their fitted curved surfaces, on the edge of a hole or a scallop, "
+     "and puts a point beyond its crossing edge's chord inside the face that holds it",
+     ChoiceField<PointPlacement>{&nested<&R::points, &SharpPointOptions::placement>, kPlacements},
+     true},
     {"spike-angle",
      "corner points are refused when normals around the corner differ more (degrees, paper "
      "5.3)",

@@ -59,7 +59,7 @@ inline constexpr std::string_view kPaperOptionName = "paper";
 inline constexpr std::string_view kPaperOptionHelp =
     "the paper's choice wherever resharp makes another (docs/method.md): signed k-means, "
     "unlimited region growing, plain merging, borders confirmed by edge vertices only, eq. 5.1 "
-    "normals";
+    "normals, points on tangent planes (eq. 5.2 / 5.3)";
 
 /// The name and help of the grid option (VertexOptions::grid): `--grid PITCH[,X,Y,Z]` on the
 /// command line, `grid=pitch` or `grid=(pitch, x, y, z)` in Python; see set_grid().

@@ -15,6 +15,7 @@ RestoreOptions paper_variant(RestoreOptions options) {
     options.bands.smooth_border_angle_deg = 0.0;
     options.bands.smooth_continuation_angle_deg = 0.0;
     options.normals.estimate = NormalEstimate::AngleWeighted;
+    options.points.placement = PointPlacement::TangentPlanes;
     return options;
 }
 

@@ -88,8 +88,9 @@ struct RestoreOptions {
 
 /// `options` with the paper's choice wherever resharp offers another: k-means on signed
 /// curvatures, region growing without a size limit, plain greedy merging, borders confirmed by
-/// edge vertices alone, feature normals by eq. 5.1. What the paper leaves open (docs/method.md,
-/// "our reading") and every other field stay as given.
+/// edge vertices alone, feature normals by eq. 5.1, points on tangent planes (eq. 5.2 / 5.3).
+/// What the paper leaves open (docs/method.md, "our reading") and every other field stay as
+/// given.
 RestoreOptions paper_variant(RestoreOptions options);
 
 /// Sets `vertices`' grid from the command line's --grid PITCH[,X,Y,Z] or Python's grid=(...):

@@ -57,6 +57,8 @@ struct RestoreReport {
     std::size_t corner_triangles = 0;
 
     std::size_t edge_points_inserted = 0;
+    /// of the edge points, those inside a face of their crossing edge (beyond its chord)
+    std::size_t face_points_inserted = 0;
     std::size_t corner_points_inserted = 0;
     std::size_t refused_by_flip_test = 0;    ///< eq. 5.4
     std::size_t refused_by_spike_test = 0;   ///< §5.3

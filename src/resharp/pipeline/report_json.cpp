@@ -50,6 +50,7 @@ nlohmann::json report_to_json(const RestoreReport& r) {
           {"corner_triangles", r.corner_triangles}}},
         {"restoration",
          {{"edge_points_inserted", r.edge_points_inserted},
+          {"face_points_inserted", r.face_points_inserted},
           {"corner_points_inserted", r.corner_points_inserted},
           {"refused_by_flip_test", r.refused_by_flip_test},
           {"refused_by_spike_test", r.refused_by_spike_test},

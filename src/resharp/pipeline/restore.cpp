@@ -338,6 +338,19 @@ std::vector<PointFate> point_fates(const BandClassification& bands, const BandRe
     return fate;
 }
 
+/// How many of the points `r` inserted are edge points put inside a face of their crossing edge
+/// (SharpPoints::face_points): edge points the candidates hold in a face's inner slot.
+std::size_t face_points_inserted(const BandRestoration& r) {
+    if (r.points.face_points == 0) return 0;
+    std::vector<std::uint8_t> in_face(r.points.points.size(), 0);
+    for (Index p : r.points.slots.corner_point) {
+        if (p != kNoIndex && p < r.points.edge_points) in_face[p] = 1;
+    }
+    return static_cast<std::size_t>(std::count_if(r.output.point_of_new_vertex.begin(),
+                                                  r.output.point_of_new_vertex.end(),
+                                                  [&](Index p) { return in_face[p] != 0; }));
+}
+
 /// restore() on one mesh: the one place that sequences the stages and fills the report.
 class Pipeline {
 public:
@@ -578,6 +591,7 @@ private:
             std::count_if(r.output.point_of_new_vertex.begin(), r.output.point_of_new_vertex.end(),
                           [&](Index p) { return p >= r.points.edge_points; }));
         report_.edge_points_inserted = new_vertices - report_.corner_points_inserted;
+        report_.face_points_inserted = face_points_inserted(r);
         report_.output_unchanged = new_vertices == 0;
         if (r.rounds_exhausted) report_.unchanged_reason = "harm rounds exhausted";
     }

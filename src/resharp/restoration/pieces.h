@@ -42,6 +42,10 @@ struct FacePolygon {
     Index at(int i) const { return ids[static_cast<std::size_t>((i + size) % size)]; }
 };
 
+/// Shape qualities closer than this are a tie: far above the rounding of points solved about
+/// their edge (1e-11 of its length), far below any difference of shape that matters.
+inline constexpr double kQualityTie = 1e-6;
+
 /// Shape quality of a triangle, 1 for equilateral and 0 for degenerate: 4 sqrt(3) area over
 /// the sum of squared edge lengths. Ranks triangles like their smallest angle, without
 /// trigonometry.
@@ -59,8 +63,8 @@ inline double shape_quality(const PieceVertices& ids, Index a, Index b, Index c)
 /// counter-clockwise like the face; at most six pieces. With a corner point: a fan around it
 /// (Fig. 7b). Otherwise: an ear at each corner whose two edges were split (it lies on one
 /// feature, cut off by the new sharp edge), then the rest as one triangle or a quad split along
-/// the diagonal that gives the better-shaped worse triangle, never along an original edge. A
-/// face without points is its own one piece.
+/// the diagonal that gives the better-shaped worse triangle (0-2 on a tie), never along an
+/// original edge. A face without points is its own one piece.
 template <class Emit>
 void for_each_piece(const Mesh& mesh, const PointSlots& slots, const PieceVertices& ids, Index f,
                     Emit&& emit) {
@@ -102,7 +106,10 @@ void for_each_piece(const Mesh& mesh, const PointSlots& slots, const PieceVertic
                                        shape_quality(ids, rest.at(0), rest.at(2), rest.at(3)));
     const double quality_13 = std::min(shape_quality(ids, rest.at(1), rest.at(2), rest.at(3)),
                                        shape_quality(ids, rest.at(1), rest.at(3), rest.at(0)));
-    if (may_use_02 && (!may_use_13 || quality_02 >= quality_13)) {
+    // Within kQualityTie the diagonals are alike and 0-2 is taken: a symmetric quad (two points
+    // mirrored about its diagonal, as on a boss) ties exactly, and the last bits of the points,
+    // which differ with where the part lies, must not choose.
+    if (may_use_02 && (!may_use_13 || quality_02 >= quality_13 - detail::kQualityTie)) {
         emit(rest.at(0), rest.at(1), rest.at(2));
         emit(rest.at(0), rest.at(2), rest.at(3));
     } else {

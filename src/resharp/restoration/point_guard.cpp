@@ -9,6 +9,7 @@
 
 #include "resharp/core/assert.h"
 #include "resharp/core/errors.h"
+#include "resharp/mesh/geometry.h"
 #include "resharp/restoration/pieces.h"
 
 namespace resharp {
@@ -29,15 +30,33 @@ struct Reference {
 
 /// The vertex's feature normal, trusted to within its fit correction: on a curved feature the
 /// estimate is that much off, and a piece standing almost on edge to it may lean past the true
-/// surface (on planes the correction is zero). Where a vertex has no feature normal (all its
-/// faces lie in bands), its plain vertex normal, which leans towards the band by up to half
-/// the edge's angle: a piece must face within 60 degrees of it.
+/// surface (on planes the correction is zero). Where the fit was not trusted and eq. 5.1's
+/// normal kept, the fitted field still says how fast the feature turns: eq. 5.1's mean of the
+/// vertex's faces is the normal about half a face inward, so it is trusted to within the
+/// field's turn over half the face judged, or its angle to the field's normal if larger (on
+/// impeller a kept normal 2.8 degrees off the exact one, 1.3 off the field's, let a piece turn
+/// against the surface). Where a vertex has no feature normal (all its faces lie in bands), its
+/// plain vertex normal, which leans towards the band by up to half the edge's angle: a piece
+/// must face within 60 degrees of it.
 struct ReferenceNormals {
     const FeatureNormals& feature;
     const std::vector<Vec3>& vertex;
-    Reference at(Index v) const {
+    /// v's reference for a piece of a face whose longest edge is `extent` long.
+    Reference at(Index v, double extent) const {
         if (feature.normal[v].isZero(0.0)) return {vertex[v], 30.0};
-        return {feature.normal[v], std::min<double>(feature.fit_correction_deg[v], 30.0)};
+        return {feature.normal[v], std::min(margin_deg(v, extent), 30.0)};
+    }
+    const Vec3& normal(Index v) const {
+        return feature.normal[v].isZero(0.0) ? vertex[v] : feature.normal[v];
+    }
+
+private:
+    double margin_deg(Index v, double extent) const {
+        const NormalField& field = feature.field(v);
+        if (field.n0.isZero(0.0) || field.n0 == feature.normal[v])
+            return feature.fit_correction_deg[v];
+        const double turn_deg = 0.5 * extent * field.gradient.norm() * 180.0 / std::numbers::pi;
+        return std::max(angle_deg(field.n0, feature.normal[v]), turn_deg);
     }
 };
 
@@ -81,14 +100,15 @@ private:
     Fault piece_fault(Index f, Index a, Index b, Index c) const {
         const Vec3 n =
             (ids_.position(b) - ids_.position(a)).cross(ids_.position(c) - ids_.position(a));
-        if (n.norm() <= kCollapsedAreaRatio * longest_edge_squared(f)) return Fault::Quality;
+        const double extent_squared = longest_edge_squared(f);
+        if (n.norm() <= kCollapsedAreaRatio * extent_squared) return Fault::Quality;
         const bool thin = spans_thin_material(a, b, c);
         const Vec3& face_normal = input_.normals.face[f];
         bool face_leans_past_surface = false;
         Fault found = Fault::None;
         for (Index v : {a, b, c}) {
             if (!ids_.is_original(v)) continue;
-            const Reference r = reference_.at(v);
+            const Reference r = reference_.at(v, std::sqrt(extent_squared));
             if (r.normal.isZero(0.0)) continue;
             const double min_cosine = sin_deg(r.margin_deg);
             if (n.dot(r.normal) <= min_cosine * n.norm()) return Fault::Quality;
@@ -118,7 +138,7 @@ private:
         for (int i = 0; i < 3; ++i) {
             for (int j = i + 1; j < 3; ++j) {
                 if (!ids_.is_original(v[i]) || !ids_.is_original(v[j])) continue;
-                if (reference_.at(v[i]).normal.dot(reference_.at(v[j]).normal) < thin_cosine_)
+                if (reference_.normal(v[i]).dot(reference_.normal(v[j])) < thin_cosine_)
                     return true;
             }
         }

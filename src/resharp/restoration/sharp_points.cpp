@@ -37,7 +37,13 @@ std::optional<Vec3> edge_point(const Vec3& a, const Vec3& n_a, const Vec3& b, co
     const double sine = direction.norm();
     if (sine < kParallelSine) return std::nullopt;
     const Vec3 d = direction / sine;
-    return solve_planes(n_a, n_b, d, n_a.dot(a), n_b.dot(b), d.dot(0.5 * (a + b)));
+    // Solved about the edge's midpoint: the right-hand sides are then a fraction of an edge
+    // length wherever the part lies, and the point moves with the part to its last bits.
+    const Vec3 middle = 0.5 * (a + b);
+    const std::optional<Vec3> x =
+        solve_planes(n_a, n_b, d, n_a.dot(a - middle), n_b.dot(b - middle), 0.0);
+    if (!x) return std::nullopt;
+    return Vec3(middle + *x);
 }
 
 bool passes_flip_test(const Vec3& a, const Vec3& n_a, const Vec3& b, const Vec3& n_b) {
@@ -57,39 +63,54 @@ bool passes_flip_test(const Vec3& a, const Vec3& n_a, const Vec3& b, const Vec3&
 
 std::optional<Vec3> corner_point(const Vec3& a, const Vec3& n_a, const Vec3& b, const Vec3& n_b,
                                  const Vec3& c, const Vec3& n_c) {
-    return solve_planes(n_a, n_b, n_c, n_a.dot(a), n_b.dot(b), n_c.dot(c));
+    const Vec3 centre = (a + b + c) / 3.0;  // as edge_point(): offsets of a triangle's size
+    const std::optional<Vec3> x =
+        solve_planes(n_a, n_b, n_c, n_a.dot(a - centre), n_b.dot(b - centre), n_c.dot(c - centre));
+    if (!x) return std::nullopt;
+    return Vec3(centre + *x);
 }
 
 namespace {
 
 /// The new points' surfaces: tangent planes or second-order surfaces at band vertices.
+///
+/// Every solve works in coordinates relative to the crossing edge's midpoint (the corner
+/// triangle's centroid) and converges to a tolerance relative to the edge's length, so that
+/// the same part anywhere and at any scale takes the same steps and stops at the same one:
+/// at 1e4 mm from the origin a coordinate's last bit is 2e-12 mm, which an absolute solve
+/// carries into every value and gradient, and a convergence test can tip on it.
 class SideSurfaces {
 public:
     SideSurfaces(const Mesh& mesh, const FeatureNormals& features, PointPlacement placement)
         : mesh_(mesh), features_(features), placement_(placement) {}
 
+    bool second_order() const { return placement_ == PointPlacement::SecondOrder; }
+
     /// Where the surfaces of u's and v's features meet nearest the edge's midpoint, starting
-    /// from the tangent planes' point `first_order`.
-    Vec3 edge_point(Index u, Index v, const Vec3& first_order, std::size_t& fallbacks) const {
-        if (placement_ == PointPlacement::TangentPlanes || (flat(u) && flat(v))) return first_order;
+    /// from `start` (the tangent planes' point); `start` itself for tangent planes, for two
+    /// planar sides, or where the surfaces do not meet within an edge length of it (counted).
+    Vec3 edge_point(Index u, Index v, const Vec3& start, std::size_t& fallbacks) const {
+        if (!second_order() || (flat(u) && flat(v))) return start;
         const Vec3& a = mesh_.positions[u];
         const Vec3& b = mesh_.positions[v];
+        const Vec3 middle = 0.5 * (a + b);
         const double length = (b - a).norm();
-        return accepted(
-            edge_junction(surface(u), surface(v), 0.5 * (a + b), first_order, solver(length)),
-            first_order, length, fallbacks);
+        const std::optional<Vec3> x = edge_junction(surface(u, middle), surface(v, middle),
+                                                    Vec3::Zero(), start - middle, solver(length));
+        return accepted(x, middle, start, length, fallbacks);
     }
 
-    /// Where the surfaces of the corner triangle t's three vertices meet nearest `first_order`.
-    Vec3 corner_point(const Triangle& t, const Vec3& first_order, std::size_t& fallbacks) const {
-        if (placement_ == PointPlacement::TangentPlanes || (flat(t[0]) && flat(t[1]) && flat(t[2])))
-            return first_order;
-        const double length = std::max({(mesh_.positions[t[1]] - mesh_.positions[t[0]]).norm(),
-                                        (mesh_.positions[t[2]] - mesh_.positions[t[1]]).norm(),
-                                        (mesh_.positions[t[0]] - mesh_.positions[t[2]]).norm()});
-        return accepted(corner_junction(surface(t[0]), surface(t[1]), surface(t[2]), first_order,
-                                        solver(length)),
-                        first_order, length, fallbacks);
+    /// Where the surfaces of the corner triangle t's three vertices meet nearest `start`.
+    Vec3 corner_point(const Triangle& t, const Vec3& start, std::size_t& fallbacks) const {
+        if (!second_order() || (flat(t[0]) && flat(t[1]) && flat(t[2]))) return start;
+        const Vec3 &a = mesh_.positions[t[0]], &b = mesh_.positions[t[1]],
+                   &c = mesh_.positions[t[2]];
+        const Vec3 centre = (a + b + c) / 3.0;
+        const double length = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+        const std::optional<Vec3> x =
+            corner_junction(surface(t[0], centre), surface(t[1], centre), surface(t[2], centre),
+                            start - centre, solver(length));
+        return accepted(x, centre, start, length, fallbacks);
     }
 
 private:
@@ -101,10 +122,12 @@ private:
         return field.n0 != features_.normal[v] || field.gradient.isZero(0.0);
     }
 
-    LocalQuadric surface(Index v) const {
+    /// v's surface with `origin` as the origin of coordinates.
+    LocalQuadric surface(Index v, const Vec3& origin) const {
         const Eigen::Matrix3d slope =
             flat(v) ? Eigen::Matrix3d::Zero() : features_.field(v).gradient;
-        return quadric_from_normal_slope(mesh_.positions[v], features_.normal[v], slope);
+        return quadric_from_normal_slope(Vec3(mesh_.positions[v] - origin), features_.normal[v],
+                                         slope);
     }
 
     /// Lengths in units of the band's edges: converged to 1e-9 of them; a step at most half one.
@@ -112,13 +135,14 @@ private:
         return {.pitch = length, .max_iterations = 20, .tolerance = 1e-9, .max_step = 0.5};
     }
 
-    /// The second-order point, unless the surfaces did not meet within `length` of the first-
-    /// order point: curvatures fitted on a few faces can put a far meeting that is no edge.
-    static Vec3 accepted(const std::optional<Vec3>& second_order, const Vec3& first_order,
+    /// origin + x, the second-order point found at x about `origin`, unless the surfaces did
+    /// not meet within `length` of `start`: curvatures fitted on a few faces can put a far
+    /// meeting that is no edge.
+    static Vec3 accepted(const std::optional<Vec3>& x, const Vec3& origin, const Vec3& start,
                          double length, std::size_t& fallbacks) {
-        if (second_order && (*second_order - first_order).norm() <= length) return *second_order;
+        if (x && (*x - (start - origin)).norm() <= length) return Vec3(origin + *x);
         ++fallbacks;
-        return first_order;
+        return start;
     }
 
     const Mesh& mesh_;
@@ -126,8 +150,57 @@ private:
     PointPlacement placement_;
 };
 
+/// Barycentric coordinates below this (relative: a fraction of the face) count as outside: a
+/// point on the face's border is not held by it, whatever the last bits of the part's
+/// coordinates say.
+constexpr double kInsideMargin = 1e-9;
+
+/// True when p, projected along the normal of face f, falls inside f, off its border.
+bool face_holds(const Mesh& mesh, Index f, const Vec3& p) {
+    const Triangle& t = mesh.triangles[f];
+    // Differences only: the test reads the same wherever the part lies.
+    const Vec3 a = mesh.positions[t[0]] - p, b = mesh.positions[t[1]] - p,
+               c = mesh.positions[t[2]] - p;
+    const Vec3 n = (b - a).cross(c - a);
+    const double area = n.squaredNorm();
+    if (area == 0.0) return false;
+    // Each coordinate is the area of the sub-triangle opposite a corner over the face's.
+    const double margin = kInsideMargin * area;
+    return b.cross(c).dot(n) > margin && c.cross(a).dot(n) > margin && a.cross(b).dot(n) > margin;
+}
+
+/// Whether face f may take a point inside it: not a corner triangle (whose slot its corner
+/// point takes) and no other edge's point inside it already.
+bool may_take_point(const BandClassification& bands, const SharpPoints& out, Index f) {
+    return bands.face_role[f] != BandRole::Corner && out.slots.corner_point[f] == kNoIndex;
+}
+
+/// The face that holds the point x of crossing edge h, beyond the edge's chord, and may take it:
+/// a face of the edge, else an edge triangle around one of its ends (where the junction lies
+/// past an end almost on it, as at a scallop cusp; faces off the bands would take phantom points
+/// on coarse smooth surfaces, docs/method.md). kNoIndex if none. Looks at the two faces and the
+/// two ends' rings, each face once at most per ring.
+Index holding_face(const Mesh& mesh, const Connectivity& c, const BandClassification& bands,
+                   const SharpPoints& out, Index h, const Vec3& x) {
+    for (Index g : {h, c.twin[h]}) {
+        const Index f = face_of(g);
+        if (may_take_point(bands, out, f) && face_holds(mesh, f, x)) return f;
+    }
+    for (Index end : {tail_vertex(mesh, h), head_vertex(mesh, h)}) {
+        for (Index f : c.faces_around(end)) {
+            if (f == face_of(h) || f == face_of(c.twin[h])) continue;
+            if (bands.face_role[f] != BandRole::None && may_take_point(bands, out, f) &&
+                face_holds(mesh, f, x))
+                return f;
+        }
+    }
+    return kNoIndex;
+}
+
 /// The point of the crossing edge of half-edge h, if h is its lower half and both ends have
-/// feature normals (counted where not).
+/// feature normals (counted where not): on the edge where eq. 5.4 holds; with second-order
+/// placement, where it fails, in the face of the edge that holds the junction (nowhere if
+/// neither does).
 void place_edge_point(const Mesh& mesh, const Connectivity& c, const BandClassification& bands,
                       const std::vector<Vec3>& normals, const SideSurfaces& sides, Index h,
                       SharpPoints& out) {
@@ -142,12 +215,25 @@ void place_edge_point(const Mesh& mesh, const Connectivity& c, const BandClassif
         return;
     }
     const std::optional<Vec3> m = edge_point(a, normals[u], b, normals[v]);
-    if (!m || !passes_flip_test(a, normals[u], b, normals[v])) {
+    const bool on_edge = m && passes_flip_test(a, normals[u], b, normals[v]);
+    if (!m || (!on_edge && !sides.second_order())) {
         ++out.refused_by_flip_test;
         return;
     }
-    out.slots.edge_point[h] = out.slots.edge_point[twin] = static_cast<Index>(out.points.size());
-    out.points.push_back(sides.edge_point(u, v, *m, out.first_order_fallbacks));
+    const Vec3 x = sides.edge_point(u, v, *m, out.first_order_fallbacks);
+    const Index id = static_cast<Index>(out.points.size());
+    if (on_edge) {
+        out.slots.edge_point[h] = out.slots.edge_point[twin] = id;
+    } else {
+        const Index f = holding_face(mesh, c, bands, out, h, x);
+        if (f == kNoIndex) {
+            ++out.refused_by_flip_test;
+            return;
+        }
+        out.slots.corner_point[f] = id;
+        ++out.face_points;
+    }
+    out.points.push_back(x);
     ++out.edge_points;
 }
 
@@ -211,7 +297,7 @@ void place_corner_points(const Mesh& mesh, const Connectivity& c,
 namespace {
 
 /// Invariant of the placement: edge points only on crossing edges, the same point on both
-/// half-edges; corner points only in corner triangles; every slot names an existing point.
+/// half-edges; every slot names an existing point.
 bool slots_follow_bands(const Connectivity& c, const BandClassification& bands,
                         const SharpPoints& p) {
     for (Index h = 0; h < p.slots.edge_point.size(); ++h) {
@@ -224,8 +310,7 @@ bool slots_follow_bands(const Connectivity& c, const BandClassification& bands,
     }
     for (Index f = 0; f < p.slots.corner_point.size(); ++f) {
         const Index id = p.slots.corner_point[f];
-        if (id != kNoIndex && (bands.face_role[f] != BandRole::Corner || id >= p.points.size()))
-            return false;
+        if (id != kNoIndex && id >= p.points.size()) return false;
     }
     return true;
 }

@@ -22,14 +22,14 @@ enum class PointPlacement {
     TangentPlanes,
     /// The features' second-order surfaces (FeatureNormals::field) at the band vertices,
     /// met by Newton's method from the tangent planes' point; that point where they do not meet
-    /// within a crossing edge's length of it.
+    /// within a crossing edge's length of it. Where eq. 5.4 fails (the point lies beyond the
+    /// crossing edge's chord) the point goes inside the face of the edge that holds it instead
+    /// of being refused (docs/method.md, "Second-order placement").
     SecondOrder,
 };
 
 struct SharpPointOptions {
-    /// Tangent planes by default until second-order placement turns no face on every corpus
-    /// part (docs/method.md, "Second-order placement").
-    PointPlacement placement = PointPlacement::TangentPlanes;
+    PointPlacement placement = PointPlacement::SecondOrder;
     /// §5.3: a corner point is refused when two of the normals around the corner triangle
     /// differ by more than this (degrees): nearly opposite normals make a spike.
     double spike_angle_deg = 150.0;
@@ -41,7 +41,8 @@ struct PointSlots {
     /// Per half-edge (#3F): the edge's point, on both half-edges of a crossing edge that has
     /// one; kNoIndex elsewhere.
     std::vector<Index> edge_point;
-    /// Per face (#F): the corner triangle's point, or kNoIndex.
+    /// Per face (#F): the point inside the face, or kNoIndex: a corner triangle's corner point,
+    /// or the point of a crossing edge of the face that lies beyond the edge's chord over it.
     std::vector<Index> corner_point;
 
     /// True when face f has a point on one of its edges or inside it.
@@ -65,10 +66,14 @@ struct SharpPoints {
     /// in face order.
     std::vector<Vec3> points;
     PointSlots slots;  ///< where each point goes
+    /// Points of crossing edges, the first `edge_points` of `points`; with those put inside a
+    /// face of their edge (`face_points` of them, in the face's corner_point slot).
     std::size_t edge_points = 0;
+    std::size_t face_points = 0;
     std::size_t corner_points = 0;
-    std::size_t refused_by_flip_test =
-        0;  ///< crossing edges failing eq. 5.4 (incl. parallel normals)
+    /// crossing edges failing eq. 5.4 (incl. parallel normals), with second-order placement
+    /// only those whose point no face of the edge holds
+    std::size_t refused_by_flip_test = 0;
     std::size_t refused_by_spike_test = 0;  ///< corner triangles failing the spike test
     std::size_t missing_normal = 0;         ///< crossing edges or corners with an unknown normal
     /// Points placed on the tangent planes because the second-order surfaces did not meet near
