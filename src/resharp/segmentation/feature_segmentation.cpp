@@ -4,10 +4,12 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <numeric>
 #include <tuple>
 
 #include "resharp/core/disjoint_sets.h"
 #include "resharp/core/errors.h"
+#include "resharp/mesh/geometric_order.h"
 #include "resharp/mesh/geometry.h"
 
 namespace resharp {
@@ -27,11 +29,38 @@ void validate(const FeatureSegmentationOptions& o) {
     }
 }
 
+/// The corners of face f sorted by vertex_swept_before(): faces compare by these, which neither the
+/// face's index nor the rotation of its corners changes.
+std::array<Index, 3> sorted_corners(const Mesh& mesh, Index f) {
+    std::array<Index, 3> t = mesh.triangles[f];
+    auto before = [&](Index a, Index b) { return vertex_swept_before(mesh, a, b); };
+    if (before(t[1], t[0])) std::swap(t[0], t[1]);
+    if (before(t[2], t[1])) std::swap(t[1], t[2]);
+    if (before(t[1], t[0])) std::swap(t[0], t[1]);
+    return t;
+}
+
+/// Faces f and g, given their sorted_corners() a and b, in geometric order.
+bool corners_before(const Mesh& mesh, const std::array<Index, 3>& a, const std::array<Index, 3>& b,
+                    Index f, Index g) {
+    for (int k = 0; k < 3; ++k) {
+        if (a[k] != b[k]) return vertex_swept_before(mesh, a[k], b[k]);
+    }
+    return f < g;  // the same three vertices: a duplicate face
+}
+
+bool face_before(const Mesh& mesh, Index f, Index g) {
+    return corners_before(mesh, sorted_corners(mesh, f), sorted_corners(mesh, g), f, g);
+}
+
 /// §4 steps 1-3: breadth-first growth across manifold edges while neighbouring face normals
 /// differ by less than the angle. A region holding `curved_limit` faces (0: no limit) only
 /// takes faces within the angle of its seed (FeatureSegmentationOptions::curved_region_faces).
 /// The queue keeps every face of the region, so its size is the region's. Seeds are taken in
-/// face order, so ids are deterministic.
+/// face order: without the limit a region is a connected component of the growth relation,
+/// whatever the seed, but a curved region that reaches the limit depends on its seed and on
+/// the order of growth (docs/robustness.md). Ids are made geometric afterwards
+/// (canonical_region_ids()).
 std::vector<Index> grow_regions(const Connectivity& c, const std::vector<Vec3>& normals,
                                 double max_angle_deg, std::size_t curved_limit,
                                 std::size_t& region_count) {
@@ -61,6 +90,56 @@ std::vector<Index> grow_regions(const Connectivity& c, const std::vector<Vec3>& 
     }
     region_count = next;
     return region;
+}
+
+/// Renumbers region ids (#F values below `count`) in geometric order: by each region's first
+/// vertex in sweep order, regions sharing it by their first face around it (face_before()). Later
+/// ties between patches go to the lower id, so ids must not depend on the mesh's numbering.
+void canonical_region_ids(const Mesh& mesh, const Connectivity& c, std::vector<Index>& region,
+                          std::size_t count) {
+    // Each vertex is weighed once per run of ring faces in one region (most rings lie in one or
+    // two), against a copy of the region's lowest position so far.
+    std::vector<Index> lowest(count, kNoIndex);
+    std::vector<Vec3> low(count);
+    for (Index v = 0; v < mesh.vertex_count(); ++v) {
+        const Vec3& p = mesh.positions[v];
+        Index previous = kNoIndex;
+        for (Index f : c.faces_around(v)) {
+            const Index r = region[f];
+            if (r == previous) continue;
+            previous = r;
+            if (lowest[r] != kNoIndex && !sweep_less(p, low[r])) continue;
+            lowest[r] = v;
+            low[r] = p;
+        }
+    }
+    std::vector<Index> order(count);
+    std::iota(order.begin(), order.end(), Index{0});
+    std::sort(order.begin(), order.end(), [&](Index a, Index b) {
+        if (lowest[a] != lowest[b]) return vertex_swept_before(mesh, lowest[a], lowest[b]);
+        return a < b;
+    });
+    // Regions sharing their lowest vertex (a run of `order`) go by their first face around it.
+    // Bound: one pass over the runs, each sorted once.
+    std::vector<Index> first_face(count, kNoIndex);
+    for (std::size_t begin = 0, end = 0; begin < count; begin = end) {
+        end = begin + 1;
+        while (end < count && lowest[order[end]] == lowest[order[begin]]) ++end;
+        if (end - begin == 1) continue;
+        const Index v = lowest[order[begin]];
+        for (Index f : c.faces_around(v)) {
+            if (lowest[region[f]] != v) continue;  // a region whose lowest vertex is another
+            Index& first = first_face[region[f]];
+            if (first == kNoIndex || face_before(mesh, f, first)) first = f;
+        }
+        std::sort(order.begin() + static_cast<std::ptrdiff_t>(begin),
+                  order.begin() + static_cast<std::ptrdiff_t>(end), [&](Index a, Index b) {
+                      return face_before(mesh, first_face[a], first_face[b]);
+                  });
+    }
+    std::vector<Index> id(count);
+    for (Index rank = 0; rank < count; ++rank) id[order[rank]] = rank;
+    for (Index& r : region) r = id[r];
 }
 
 /// Distinct values of face_patch over the ring of v, skipping kNoIndex; rings are small.
@@ -341,20 +420,25 @@ std::size_t merge_patches(const Mesh& mesh, const Connectivity& c, const std::ve
     return merges;
 }
 
-/// Renumbers patch ids densely in order of first face; returns the count.
+/// Renumbers patch ids densely, keeping their order (geometric: canonical_region_ids(), and a
+/// merged set takes its lowest id); returns the count.
 std::size_t compact_ids(std::vector<Index>& face_patch, std::size_t id_bound) {
     std::vector<Index> dense(id_bound, kNoIndex);
+    for (Index p : face_patch) {
+        if (p != kNoIndex) dense[p] = 0;
+    }
     Index next = 0;
+    for (Index& d : dense) {
+        if (d != kNoIndex) d = next++;
+    }
     for (Index& p : face_patch) {
-        if (p == kNoIndex) continue;
-        if (dense[p] == kNoIndex) dense[p] = next++;
-        p = dense[p];
+        if (p != kNoIndex) p = dense[p];
     }
     return next;
 }
 
-/// §4 step 4: each vertex joins the patch with the most faces in its one-ring (ties: lower id).
-/// `single`: single_ring_patches() of face_patch.
+/// §4 step 4: each vertex joins the patch with the most faces in its one-ring (ties: lower id,
+/// which canonical_region_ids() made geometric). `single`: single_ring_patches() of face_patch.
 std::vector<Index> label_vertices(const Mesh& mesh, const Connectivity& c,
                                   const std::vector<Index>& face_patch,
                                   const std::vector<Index>& single) {
@@ -408,6 +492,11 @@ double elevation_from_patch(const Mesh& mesh, const Connectivity& c,
 /// (h / 2r) and far below the dihedral angle of an edge worth restoring.
 constexpr double kOnPlaneSine = 0.2;
 
+/// Sines of elevation this close are equal: a vertex on two patches' planes at once is at 0 from
+/// both, and rounding, which the part's scale and position change, must not choose between
+/// them. Ties keep the vote, then the candidate of lower id.
+constexpr double kElevationTie = 1e-9;
+
 /// The patches a vertex could lie on: those of its faces, or, for a vertex whose faces all lie
 /// in bands, those of its labelled neighbours. A vertex with faces of a single patch (and band
 /// faces) keeps its vote: on a chamfer that follows the grid no band face grows into a feature,
@@ -446,7 +535,8 @@ std::vector<Index> refine_border_labels(const Mesh& mesh, const Connectivity& c,
         Index best_patch = label[v];
         for (Index p : candidates) {
             const double e = elevation_from_patch(mesh, c, normals, face_patch, label, v, p);
-            if (e < best || (e == best && p == label[v])) {
+            const bool tie = e == best || std::abs(e - best) <= kElevationTie;
+            if (e < best - kElevationTie || (tie && p == label[v])) {
                 best = e;
                 best_patch = p;
             }
@@ -481,6 +571,7 @@ FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& conne
     std::vector<Index> region =
         grow_regions(connectivity, face_normals, options.max_normal_angle_deg,
                      options.curved_region_faces, s.grown_patches);
+    canonical_region_ids(mesh, connectivity, region, s.grown_patches);
     const PatchCensus census =
         take_census(mesh, connectivity, region, s.grown_patches, is_edge_vertex);
     std::vector<PatchRole> role = assign_roles(census, options);
