@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <numeric>
 #include <tuple>
 
 #include "resharp/core/disjoint_sets.h"
@@ -57,10 +56,10 @@ bool face_before(const Mesh& mesh, Index f, Index g) {
 /// differ by less than the angle. A region holding `curved_limit` faces (0: no limit) only
 /// takes faces within the angle of its seed (FeatureSegmentationOptions::curved_region_faces).
 /// The queue keeps every face of the region, so its size is the region's. Seeds are taken in
-/// face order: without the limit a region is a connected component of the growth relation,
-/// whatever the seed, but a curved region that reaches the limit depends on its seed and on
-/// the order of growth (docs/robustness.md). Ids are made geometric afterwards
-/// (canonical_region_ids()).
+/// face order, so ids follow the face order and are never compared where a tie must not depend
+/// on it (wins_tie()). Without the limit a region is a connected component of the growth
+/// relation, whatever the seed; a curved region that reaches the limit depends on its seed and
+/// on the order of growth (docs/robustness.md).
 std::vector<Index> grow_regions(const Connectivity& c, const std::vector<Vec3>& normals,
                                 double max_angle_deg, std::size_t curved_limit,
                                 std::size_t& region_count) {
@@ -90,56 +89,6 @@ std::vector<Index> grow_regions(const Connectivity& c, const std::vector<Vec3>& 
     }
     region_count = next;
     return region;
-}
-
-/// Renumbers region ids (#F values below `count`) in geometric order: by each region's first
-/// vertex in sweep order, regions sharing it by their first face around it (face_before()). Later
-/// ties between patches go to the lower id, so ids must not depend on the mesh's numbering.
-void canonical_region_ids(const Mesh& mesh, const Connectivity& c, std::vector<Index>& region,
-                          std::size_t count) {
-    // Each vertex is weighed once per run of ring faces in one region (most rings lie in one or
-    // two), against a copy of the region's lowest position so far.
-    std::vector<Index> lowest(count, kNoIndex);
-    std::vector<Vec3> low(count);
-    for (Index v = 0; v < mesh.vertex_count(); ++v) {
-        const Vec3& p = mesh.positions[v];
-        Index previous = kNoIndex;
-        for (Index f : c.faces_around(v)) {
-            const Index r = region[f];
-            if (r == previous) continue;
-            previous = r;
-            if (lowest[r] != kNoIndex && !sweep_less(p, low[r])) continue;
-            lowest[r] = v;
-            low[r] = p;
-        }
-    }
-    std::vector<Index> order(count);
-    std::iota(order.begin(), order.end(), Index{0});
-    std::sort(order.begin(), order.end(), [&](Index a, Index b) {
-        if (lowest[a] != lowest[b]) return vertex_swept_before(mesh, lowest[a], lowest[b]);
-        return a < b;
-    });
-    // Regions sharing their lowest vertex (a run of `order`) go by their first face around it.
-    // Bound: one pass over the runs, each sorted once.
-    std::vector<Index> first_face(count, kNoIndex);
-    for (std::size_t begin = 0, end = 0; begin < count; begin = end) {
-        end = begin + 1;
-        while (end < count && lowest[order[end]] == lowest[order[begin]]) ++end;
-        if (end - begin == 1) continue;
-        const Index v = lowest[order[begin]];
-        for (Index f : c.faces_around(v)) {
-            if (lowest[region[f]] != v) continue;  // a region whose lowest vertex is another
-            Index& first = first_face[region[f]];
-            if (first == kNoIndex || face_before(mesh, f, first)) first = f;
-        }
-        std::sort(order.begin() + static_cast<std::ptrdiff_t>(begin),
-                  order.begin() + static_cast<std::ptrdiff_t>(end), [&](Index a, Index b) {
-                      return face_before(mesh, first_face[a], first_face[b]);
-                  });
-    }
-    std::vector<Index> id(count);
-    for (Index rank = 0; rank < count; ++rank) id[order[rank]] = rank;
-    for (Index& r : region) r = id[r];
 }
 
 /// Distinct values of face_patch over the ring of v, skipping kNoIndex; rings are small.
@@ -420,28 +369,61 @@ std::size_t merge_patches(const Mesh& mesh, const Connectivity& c, const std::ve
     return merges;
 }
 
-/// Renumbers patch ids densely, keeping their order (geometric: canonical_region_ids(), and a
-/// merged set takes its lowest id); returns the count.
+/// Renumbers patch ids densely in order of first face; returns the count.
 std::size_t compact_ids(std::vector<Index>& face_patch, std::size_t id_bound) {
     std::vector<Index> dense(id_bound, kNoIndex);
-    for (Index p : face_patch) {
-        if (p != kNoIndex) dense[p] = 0;
-    }
     Index next = 0;
-    for (Index& d : dense) {
-        if (d != kNoIndex) d = next++;
-    }
     for (Index& p : face_patch) {
-        if (p != kNoIndex) p = dense[p];
+        if (p == kNoIndex) continue;
+        if (dense[p] == kNoIndex) dense[p] = next++;
+        p = dense[p];
     }
     return next;
 }
 
-/// §4 step 4: each vertex joins the patch with the most faces in its one-ring (ties: lower id,
-/// which canonical_region_ids() made geometric). `single`: single_ring_patches() of face_patch.
+/// Per patch (#count, from face_patch, #F): its first vertex in sweep order (geometric_order.h).
+/// Most corners lie above the lowest found so far and one comparison of z turns them away.
+std::vector<Index> lowest_vertices(const Mesh& mesh, const std::vector<Index>& face_patch,
+                                   std::size_t count) {
+    std::vector<Index> lowest(count, kNoIndex);
+    std::vector<double> lowest_z(count, std::numeric_limits<double>::infinity());
+    for (Index f = 0; f < face_patch.size(); ++f) {
+        const Index p = face_patch[f];
+        if (p == kNoIndex) continue;
+        for (Index v : mesh.triangles[f]) {
+            if (mesh.positions[v].z() > lowest_z[p]) continue;
+            if (lowest[p] == kNoIndex || vertex_swept_before(mesh, v, lowest[p])) {
+                lowest[p] = v;
+                lowest_z[p] = mesh.positions[v].z();
+            }
+        }
+    }
+    return lowest;
+}
+
+/// Whether patch p wins a tie of votes at v against patch q: the patch whose first vertex comes
+/// first in sweep order (lowest_vertices()), as ids numbered in a mesher's face order would
+/// have it; patches sharing that vertex by their first face around v (face_before()).
+bool wins_tie(const Mesh& mesh, const Connectivity& c, const std::vector<Index>& face_patch,
+              const std::vector<Index>& lowest, Index v, Index p, Index q) {
+    if (lowest[p] != lowest[q]) return vertex_swept_before(mesh, lowest[p], lowest[q]);
+    Index first = kNoIndex;
+    for (Index f : c.faces_around(v)) {
+        if ((face_patch[f] == p || face_patch[f] == q) &&
+            (first == kNoIndex || face_before(mesh, f, first))) {
+            first = f;
+        }
+    }
+    return face_patch[first] == p;
+}
+
+/// §4 step 4: each vertex joins the patch with the most faces in its one-ring (ties:
+/// wins_tie(), not ids, which follow the face order). `single`: single_ring_patches() of
+/// face_patch; `count`: the number of patches.
 std::vector<Index> label_vertices(const Mesh& mesh, const Connectivity& c,
                                   const std::vector<Index>& face_patch,
-                                  const std::vector<Index>& single) {
+                                  const std::vector<Index>& single, std::size_t count) {
+    const std::vector<Index> lowest = lowest_vertices(mesh, face_patch, count);
     std::vector<Index> label(mesh.vertex_count(), kNoIndex);
     std::vector<std::pair<Index, int>> counts;
     for (Index v = 0; v < mesh.vertex_count(); ++v) {
@@ -462,7 +444,7 @@ std::vector<Index> label_vertices(const Mesh& mesh, const Connectivity& c,
         }
         int best = 0;
         for (const auto& [p, n] : counts) {
-            if (n > best || (n == best && p < label[v])) {
+            if (n > best || (n == best && wins_tie(mesh, c, face_patch, lowest, v, p, label[v]))) {
                 best = n;
                 label[v] = p;
             }
@@ -571,7 +553,6 @@ FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& conne
     std::vector<Index> region =
         grow_regions(connectivity, face_normals, options.max_normal_angle_deg,
                      options.curved_region_faces, s.grown_patches);
-    canonical_region_ids(mesh, connectivity, region, s.grown_patches);
     const PatchCensus census =
         take_census(mesh, connectivity, region, s.grown_patches, is_edge_vertex);
     std::vector<PatchRole> role = assign_roles(census, options);
@@ -590,8 +571,9 @@ FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& conne
     s.patch_count = compact_ids(region, s.grown_patches);
     single = carry_single_patches(connectivity, region, std::move(single));
     s.face_patch = std::move(region);
-    s.vertex_patch = refine_border_labels(mesh, connectivity, face_normals, s.face_patch, single,
-                                          label_vertices(mesh, connectivity, s.face_patch, single));
+    s.vertex_patch = refine_border_labels(
+        mesh, connectivity, face_normals, s.face_patch, single,
+        label_vertices(mesh, connectivity, s.face_patch, single, s.patch_count));
     return s;
 }
 
