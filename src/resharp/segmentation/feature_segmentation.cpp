@@ -381,32 +381,29 @@ std::size_t compact_ids(std::vector<Index>& face_patch, std::size_t id_bound) {
     return next;
 }
 
-/// Per patch (#count, from face_patch, #F): its first vertex in sweep order (geometric_order.h).
-/// Most corners lie above the lowest found so far and one comparison of z turns them away.
-std::vector<Index> lowest_vertices(const Mesh& mesh, const std::vector<Index>& face_patch,
-                                   std::size_t count) {
-    std::vector<Index> lowest(count, kNoIndex);
-    std::vector<double> lowest_z(count, std::numeric_limits<double>::infinity());
+/// Per patch (#count, from face_patch, #F): the least z of its vertices. Exact (a least value,
+/// not a sum), so a scaled or moved part keeps its order and its ties.
+std::vector<double> lowest_z(const Mesh& mesh, const std::vector<Index>& face_patch,
+                             std::size_t count) {
+    std::vector<double> lowest(count, std::numeric_limits<double>::infinity());
     for (Index f = 0; f < face_patch.size(); ++f) {
         const Index p = face_patch[f];
         if (p == kNoIndex) continue;
-        for (Index v : mesh.triangles[f]) {
-            if (mesh.positions[v].z() > lowest_z[p]) continue;
-            if (lowest[p] == kNoIndex || vertex_swept_before(mesh, v, lowest[p])) {
-                lowest[p] = v;
-                lowest_z[p] = mesh.positions[v].z();
-            }
-        }
+        const Triangle& t = mesh.triangles[f];
+        const double z = std::min(
+            {mesh.positions[t[0]].z(), mesh.positions[t[1]].z(), mesh.positions[t[2]].z()});
+        lowest[p] = std::min(lowest[p], z);
     }
     return lowest;
 }
 
-/// Whether patch p wins a tie of votes at v against patch q: the patch whose first vertex comes
-/// first in sweep order (lowest_vertices()), as ids numbered in a mesher's face order would
-/// have it; patches sharing that vertex by their first face around v (face_before()).
+/// Whether patch p wins a tie of votes at v against patch q: the patch reaching lower in z
+/// (lowest_z()), as it went to the lower id when ids followed a mesher's face order, which
+/// sweeps the grid slab by slab; patches reaching as low by the first face around v in
+/// geometric order (face_before()).
 bool wins_tie(const Mesh& mesh, const Connectivity& c, const std::vector<Index>& face_patch,
-              const std::vector<Index>& lowest, Index v, Index p, Index q) {
-    if (lowest[p] != lowest[q]) return vertex_swept_before(mesh, lowest[p], lowest[q]);
+              const std::vector<double>& lowest, Index v, Index p, Index q) {
+    if (lowest[p] != lowest[q]) return lowest[p] < lowest[q];
     Index first = kNoIndex;
     for (Index f : c.faces_around(v)) {
         if ((face_patch[f] == p || face_patch[f] == q) &&
@@ -423,7 +420,7 @@ bool wins_tie(const Mesh& mesh, const Connectivity& c, const std::vector<Index>&
 std::vector<Index> label_vertices(const Mesh& mesh, const Connectivity& c,
                                   const std::vector<Index>& face_patch,
                                   const std::vector<Index>& single, std::size_t count) {
-    const std::vector<Index> lowest = lowest_vertices(mesh, face_patch, count);
+    const std::vector<double> lowest = lowest_z(mesh, face_patch, count);
     std::vector<Index> label(mesh.vertex_count(), kNoIndex);
     std::vector<std::pair<Index, int>> counts;
     for (Index v = 0; v < mesh.vertex_count(); ++v) {
