@@ -23,8 +23,8 @@ inline bool lexicographically_less(const Vec3& a, const Vec3& b) {
 /// Lexicographic in (z, y, x): the order in which a mesher sweeping its grid slab by slab meets
 /// points, for decisions taken one after another across the part (which broken edge is bridged
 /// first, which patch wins a tie of votes). Taken in this order they fall as they did in a
-/// mesher's own numbering; in (x, y, z) order the cone of smooth_solids_test got 15 % more
-/// phantom points, over its bound.
+/// mesher's own numbering; with the ends of broken edges in (x, y, z) order the 3-cell cone of
+/// smooth_solids_test got 86 phantom points where its bound allows 85.
 inline bool sweep_less(const Vec3& a, const Vec3& b) {
     if (a.z() != b.z()) return a.z() < b.z();
     if (a.y() != b.y()) return a.y() < b.y();
@@ -34,14 +34,18 @@ inline bool sweep_less(const Vec3& a, const Vec3& b) {
 /// Vertices ordered by position; coincident vertices by index (the only order they have).
 inline bool vertex_before(const Mesh& mesh, Index a, Index b) {
     const Vec3 &pa = mesh.positions[a], &pb = mesh.positions[b];
-    if (pa != pb) return lexicographically_less(pa, pb);
+    if (pa.x() != pb.x()) return pa.x() < pb.x();
+    if (pa.y() != pb.y()) return pa.y() < pb.y();
+    if (pa.z() != pb.z()) return pa.z() < pb.z();
     return a < b;
 }
 
-/// Vertices in sweep order; coincident vertices by index.
+/// Vertices in sweep_less() order; coincident vertices by index.
 inline bool vertex_swept_before(const Mesh& mesh, Index a, Index b) {
     const Vec3 &pa = mesh.positions[a], &pb = mesh.positions[b];
-    if (pa != pb) return sweep_less(pa, pb);
+    if (pa.z() != pb.z()) return pa.z() < pb.z();
+    if (pa.y() != pb.y()) return pa.y() < pb.y();
+    if (pa.x() != pb.x()) return pa.x() < pb.x();
     return a < b;
 }
 

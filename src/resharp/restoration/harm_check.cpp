@@ -469,6 +469,7 @@ private:
             if (!turned(j) || least_distance_squared(q, candidates.boxes[j]) >= other) continue;
             against = std::min(against, distance_squared(q, candidates.faces[j]));
         }
+        if (against == kInfinity) return false;  // no face turned against is near enough
         const double tie = kTouchRatio * std::sqrt(longest_edge_squared(f));
         const double reach = std::sqrt(against) + tie;  // as near as the faces turned against
         if (!(reach < std::sqrt(other))) return false;

@@ -48,10 +48,6 @@ bool corners_before(const Mesh& mesh, const std::array<Index, 3>& a, const std::
     return f < g;  // the same three vertices: a duplicate face
 }
 
-bool face_before(const Mesh& mesh, Index f, Index g) {
-    return corners_before(mesh, sorted_corners(mesh, f), sorted_corners(mesh, g), f, g);
-}
-
 /// §4 steps 1-3: breadth-first growth across manifold edges while neighbouring face normals
 /// differ by less than the angle. A region holding `curved_limit` faces (0: no limit) only
 /// takes faces within the angle of its seed (FeatureSegmentationOptions::curved_region_faces).
@@ -381,34 +377,21 @@ std::size_t compact_ids(std::vector<Index>& face_patch, std::size_t id_bound) {
     return next;
 }
 
-/// Per patch (#count, from face_patch, #F): the least z of its vertices. Exact (a least value,
-/// not a sum), so a scaled or moved part keeps its order and its ties.
-std::vector<double> lowest_z(const Mesh& mesh, const std::vector<Index>& face_patch,
-                             std::size_t count) {
-    std::vector<double> lowest(count, std::numeric_limits<double>::infinity());
-    for (Index f = 0; f < face_patch.size(); ++f) {
-        const Index p = face_patch[f];
-        if (p == kNoIndex) continue;
-        const Triangle& t = mesh.triangles[f];
-        const double z = std::min(
-            {mesh.positions[t[0]].z(), mesh.positions[t[1]].z(), mesh.positions[t[2]].z()});
-        lowest[p] = std::min(lowest[p], z);
-    }
-    return lowest;
-}
-
 /// Whether patch p wins a tie of votes at v against patch q: the patch reaching lower in z
-/// (lowest_z()), as it went to the lower id when ids followed a mesher's face order, which
-/// sweeps the grid slab by slab; patches reaching as low by the first face around v in
-/// geometric order (face_before()).
+/// (`lowest`: per patch, the least z of its vertices), as it went to the lower id when ids followed
+/// a mesher's face order, which sweeps the grid slab by slab; patches reaching as low by the first
+/// face around v in geometric order (corners_before()).
 bool wins_tie(const Mesh& mesh, const Connectivity& c, const std::vector<Index>& face_patch,
               const std::vector<double>& lowest, Index v, Index p, Index q) {
     if (lowest[p] != lowest[q]) return lowest[p] < lowest[q];
     Index first = kNoIndex;
+    std::array<Index, 3> first_corners{};
     for (Index f : c.faces_around(v)) {
-        if ((face_patch[f] == p || face_patch[f] == q) &&
-            (first == kNoIndex || face_before(mesh, f, first))) {
+        if (face_patch[f] != p && face_patch[f] != q) continue;
+        const std::array<Index, 3> corners = sorted_corners(mesh, f);
+        if (first == kNoIndex || corners_before(mesh, corners, first_corners, f, first)) {
             first = f;
+            first_corners = corners;
         }
     }
     return face_patch[first] == p;
@@ -420,14 +403,13 @@ bool wins_tie(const Mesh& mesh, const Connectivity& c, const std::vector<Index>&
 std::vector<Index> label_vertices(const Mesh& mesh, const Connectivity& c,
                                   const std::vector<Index>& face_patch,
                                   const std::vector<Index>& single, std::size_t count) {
-    const std::vector<double> lowest = lowest_z(mesh, face_patch, count);
     std::vector<Index> label(mesh.vertex_count(), kNoIndex);
+    // Per patch, the least z of its vertices (exact: a least value, not a sum, so a scaled or
+    // moved part keeps its order and its ties), gathered on the way; ties wait for it.
+    std::vector<double> lowest(count, std::numeric_limits<double>::infinity());
+    std::vector<Index> tied;
     std::vector<std::pair<Index, int>> counts;
-    for (Index v = 0; v < mesh.vertex_count(); ++v) {
-        if (single[v] != kMixedRing) {
-            label[v] = single[v];  // kNoIndex too: all faces in bands
-            continue;
-        }
+    auto count_votes = [&](Index v) {
         counts.clear();
         for (Index f : c.faces_around(v)) {
             const Index p = face_patch[f];
@@ -439,6 +421,30 @@ std::vector<Index> label_vertices(const Mesh& mesh, const Connectivity& c,
             else
                 ++it->second;
         }
+    };
+    for (Index v = 0; v < mesh.vertex_count(); ++v) {
+        const double z = mesh.positions[v].z();
+        if (single[v] != kMixedRing) {
+            label[v] = single[v];  // kNoIndex too: all faces in bands
+            if (single[v] != kNoIndex) lowest[single[v]] = std::min(lowest[single[v]], z);
+            continue;
+        }
+        count_votes(v);
+        int best = 0;
+        bool tie = false;
+        for (const auto& [p, n] : counts) {
+            lowest[p] = std::min(lowest[p], z);
+            tie = n == best || (tie && n < best);
+            if (n > best) {
+                best = n;
+                label[v] = p;
+            }
+        }
+        if (tie) tied.push_back(v);
+    }
+    // Bound: the tied vertices, each counted again.
+    for (Index v : tied) {
+        count_votes(v);
         int best = 0;
         for (const auto& [p, n] : counts) {
             if (n > best || (n == best && wins_tie(mesh, c, face_patch, lowest, v, p, label[v]))) {
