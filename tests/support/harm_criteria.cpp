@@ -41,11 +41,23 @@ public:
                   [&](Index a, Index b) { return centre_[a].x() < centre_[b].x(); });
         sorted_x_.reserve(n);
         for (Index g : order_) sorted_x_.push_back(centre_[g].x());
-        // Squared distances this close count as equal: a vertex lies on every face around it,
-        // at a distance rounding may make slightly above 0. Relative to the part, so that a
-        // scaled part ties the same faces.
-        const double tie = 1e-10 * box.diagonal().norm();
-        tie_ = tie * tie;
+        // Distances this close count as equal: a vertex lies on every face around it, at a
+        // distance rounding may make slightly above 0, and a point nearest an input edge or
+        // vertex is equally near the faces holding it, at any distance. Relative to the part, so
+        // that a scaled, moved or renumbered part ties the same faces. (Until issue 12 the tie
+        // was on squared distances, which ties faces only near a distance of 0: elsewhere
+        // rounding chose, differently in each face order.)
+        tie_ = 1e-10 * box.diagonal().norm();
+    }
+
+    /// Squared distances a and b, a nearer than b by more than the tie.
+    bool nearer(double a, double b) const { return std::sqrt(a) + tie_ < std::sqrt(b); }
+
+    /// The squared distance within which a face may be among the nearest, nearest being the
+    /// least found so far: 1 % beyond it, and the tie.
+    double bound(double nearest) const {
+        const double d = std::sqrt(1.01 * nearest) + tie_;
+        return d * d;
     }
 
     /// Whether some input face among those nearest q has a normal within 90 degrees of n.
@@ -54,19 +66,19 @@ public:
         bool agrees = false;
         auto consider = [&](Index g) {
             const double reach = std::max(0.0, (q - centre_[g]).norm() - radius_[g]);
-            if (reach * reach > 1.01 * nearest + tie_) return;  // cannot be among the nearest
+            if (reach * reach > bound(nearest)) return;  // cannot be among the nearest
             const Triangle& t = input_.triangles[g];
             const double d = squared_distance_to_triangle(
                 q, input_.positions[t[0]], input_.positions[t[1]], input_.positions[t[2]]);
-            if (d < nearest - tie_) agrees = false;
-            if (d <= nearest + tie_) agrees = agrees || normal_[g].dot(n) >= -1e-6;
+            if (nearer(d, nearest)) agrees = false;
+            if (!nearer(nearest, d)) agrees = agrees || normal_[g].dot(n) >= -1e-6;
             nearest = std::min(nearest, d);
         };
         // A face whose centre is farther than max_radius_ + sqrt(bound) along x is farther than
         // sqrt(bound) from q, so each walk ends there (at the latest at the end of the list).
         auto beyond = [&](double x) {
             const double gap = std::abs(x - q.x()) - max_radius_;
-            return gap > 0.0 && gap * gap > 1.01 * nearest + tie_;
+            return gap > 0.0 && gap * gap > bound(nearest);
         };
         const auto start = std::lower_bound(sorted_x_.begin(), sorted_x_.end(), q.x());
         const std::size_t middle = static_cast<std::size_t>(start - sorted_x_.begin());

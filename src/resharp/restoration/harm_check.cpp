@@ -463,6 +463,9 @@ private:
     /// face f first (the nearest, as a rule, and almost never turned against), then the faces
     /// turned against that may come nearer than f, then, only if one did, the other faces
     /// that may come as near as it. The distance to a face's box skips the faces that cannot.
+    /// Strictly nearer means by more than kTouchRatio of f's size: where q is nearest an input
+    /// edge or vertex, the faces holding it are equally near, and rounding, which the scale,
+    /// the position and the order of the mesh change, must not decide which is nearer.
     /// (k: the piece's column in candidates.against.)
     bool turned_at_point(const Vec3& q, const Vec3& n, Index f, Index k,
                          const Scratch& candidates) const {
@@ -474,15 +477,26 @@ private:
             if (!turned(j) || least_distance_squared(q, candidates.boxes[j]) >= other) continue;
             against = std::min(against, distance_squared(q, candidates.faces[j]));
         }
-        if (!(against < other)) return false;
+        if (against == kInfinity) return false;  // no face turned against is near enough
+        const double tie = kTouchRatio * std::sqrt(longest_edge_squared(f));
+        const double reach = std::sqrt(against) + tie;  // as near as the faces turned against
+        if (!(reach < std::sqrt(other))) return false;
         for (std::size_t j = 0; j < candidates.faces.size(); ++j) {
             const Index g = candidates.faces[j];
-            if (g == f || turned(j) || least_distance_squared(q, candidates.boxes[j]) > against) {
+            if (g == f || turned(j) ||
+                least_distance_squared(q, candidates.boxes[j]) > reach * reach) {
                 continue;
             }
-            if (distance_squared(q, g) <= against) return false;
+            if (distance_squared(q, g) <= reach * reach) return false;
         }
         return true;
+    }
+
+    double longest_edge_squared(Index g) const {
+        const Triangle& t = input_.mesh.triangles[g];
+        const auto& x = input_.mesh.positions;
+        return std::max({(x[t[1]] - x[t[0]]).squaredNorm(), (x[t[2]] - x[t[1]]).squaredNorm(),
+                         (x[t[0]] - x[t[2]]).squaredNorm()});
     }
 
     /// A lower bound of the squared distance from q to the face in `box`, shrunk far beyond

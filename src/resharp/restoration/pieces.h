@@ -3,10 +3,12 @@
 /// shared by the guard, which judges pieces before any mesh is built, and the split, which
 /// emits them. One rule in one place, so that what the guard accepted is what the split makes.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <span>
 
+#include "resharp/mesh/geometric_order.h"
 #include "resharp/mesh/mesh.h"
 #include "resharp/restoration/sharp_points.h"
 
@@ -42,8 +44,8 @@ struct FacePolygon {
     Index at(int i) const { return ids[static_cast<std::size_t>((i + size) % size)]; }
 };
 
-/// Shape qualities closer than this are a tie: far above the rounding of points solved about
-/// their edge (1e-11 of its length), far below any difference of shape that matters.
+/// Shape qualities closer than this (relative) are a tie: far above the rounding of points solved
+/// about their edge (1e-11 of its length), far below any difference of shape that matters.
 inline constexpr double kQualityTie = 1e-6;
 
 /// Shape quality of a triangle, 1 for equilateral and 0 for degenerate: 4 sqrt(3) area over
@@ -57,14 +59,29 @@ inline double shape_quality(const PieceVertices& ids, Index a, Index b, Index c)
     return 2.0 * std::sqrt(3.0) * (pb - pa).cross(pc - pa).norm() / edges;
 }
 
+/// Whether the quad `rest` is split along its diagonal 0-2 rather than 1-3, given the worse
+/// quality of each split: the better one, and on a tie the diagonal through the quad's first
+/// corner in geometric order, which the face's numbering does not change.
+inline bool diagonal_02_is_better(const PieceVertices& ids, const FacePolygon& rest,
+                                  double quality_02, double quality_13) {
+    const double tie = kQualityTie * std::max(quality_02, quality_13);
+    if (std::abs(quality_02 - quality_13) > tie) return quality_02 > quality_13;
+    int first = 0;
+    for (int i = 1; i < 4; ++i) {
+        if (lexicographically_less(ids.position(rest.at(i)), ids.position(rest.at(first))))
+            first = i;
+    }
+    return first % 2 == 0;
+}
+
 }  // namespace detail
 
 /// Calls emit(a, b, c) for each piece of face f (ids as PieceVertices numbers them),
 /// counter-clockwise like the face; at most six pieces. With a corner point: a fan around it
 /// (Fig. 7b). Otherwise: an ear at each corner whose two edges were split (it lies on one
 /// feature, cut off by the new sharp edge), then the rest as one triangle or a quad split along
-/// the diagonal that gives the better-shaped worse triangle (0-2 on a tie), never along an
-/// original edge. A face without points is its own one piece.
+/// the diagonal that gives the better-shaped worse triangle (ties: diagonal_02_is_better()),
+/// never along an original edge. A face without points is its own one piece.
 template <class Emit>
 void for_each_piece(const Mesh& mesh, const PointSlots& slots, const PieceVertices& ids, Index f,
                     Emit&& emit) {
@@ -106,10 +123,11 @@ void for_each_piece(const Mesh& mesh, const PointSlots& slots, const PieceVertic
                                        shape_quality(ids, rest.at(0), rest.at(2), rest.at(3)));
     const double quality_13 = std::min(shape_quality(ids, rest.at(1), rest.at(2), rest.at(3)),
                                        shape_quality(ids, rest.at(1), rest.at(3), rest.at(0)));
-    // Within kQualityTie the diagonals are alike and 0-2 is taken: a symmetric quad (two points
-    // mirrored about its diagonal, as on a boss) ties exactly, and the last bits of the points,
-    // which differ with where the part lies, must not choose.
-    if (may_use_02 && (!may_use_13 || quality_02 >= quality_13 - detail::kQualityTie)) {
+    // Within kQualityTie the diagonals are alike: a symmetric quad (two points mirrored about
+    // its diagonal, as on a boss) ties exactly, and neither the last bits of the points, which
+    // differ with where the part lies, nor the corner the face starts at may choose.
+    if (may_use_02 &&
+        (!may_use_13 || detail::diagonal_02_is_better(ids, rest, quality_02, quality_13))) {
         emit(rest.at(0), rest.at(1), rest.at(2));
         emit(rest.at(0), rest.at(2), rest.at(3));
     } else {

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <numbers>
 #include <string>
 
 #include "resharp/core/disjoint_sets.h"
 #include "resharp/core/errors.h"
+#include "resharp/mesh/geometric_order.h"
 #include "resharp/segmentation/kmeans.h"
 
 namespace resharp {
@@ -118,53 +118,93 @@ bool is_edge_end(const Mesh& mesh, const Connectivity& c, const std::vector<std:
     return !second;
 }
 
+/// A breadth-first walk from an end of a broken edge through non-edge vertices to another
+/// piece of edge. Each vertex's new neighbours join the queue in geometric order
+/// (geometric_order.h), and of the pieces' vertices one ring reaches, the first in that order
+/// is taken, so the walk and its path do not depend on the mesh's numbering.
+class BridgeWalk {
+public:
+    explicit BridgeWalk(std::size_t vertex_count) : parent_(vertex_count, kNoIndex) {}
+
+    /// The vertex of another piece reached from `end` through at most `max_walk` non-edge
+    /// vertices, or kNoIndex; path() then leads back from it.
+    template <class PieceOf>
+    Index walk(const Mesh& mesh, const Connectivity& c, const std::vector<std::uint8_t>& is_edge,
+               Index end, int max_walk, PieceOf&& piece_of) {
+        clear();
+        queue_.assign(1, end);
+        parent_[end] = end;
+        touched_.assign(1, end);
+        const Index own = piece_of(end);
+        int walked = 0;
+        // Bound: at most P (max_walk) vertices walked from the end, each visiting its ring.
+        for (std::size_t head = 0; head < queue_.size() && walked <= max_walk; ++head) {
+            const Index v = queue_[head];
+            if (v != end) ++walked;
+            Index reached = kNoIndex;
+            fresh_.clear();
+            for_each_ring_vertex(mesh, c, v, [&](Index j) {
+                if (parent_[j] != kNoIndex) return;
+                if (!is_edge[j]) {
+                    parent_[j] = v;
+                    touched_.push_back(j);
+                    fresh_.push_back(j);
+                } else if (piece_of(j) != own &&
+                           (reached == kNoIndex || vertex_before(mesh, j, reached))) {
+                    reached = j;
+                }
+            });
+            if (reached != kNoIndex) {
+                parent_[reached] = v;
+                touched_.push_back(reached);
+                return reached;
+            }
+            sort_vertices(mesh, fresh_);
+            queue_.insert(queue_.end(), fresh_.begin(), fresh_.end());
+        }
+        return kNoIndex;
+    }
+
+    Index parent(Index v) const { return parent_[v]; }
+
+private:
+    void clear() {
+        for (Index v : touched_) parent_[v] = kNoIndex;
+        touched_.clear();
+    }
+
+    std::vector<Index> parent_;
+    std::vector<Index> touched_, queue_, fresh_;
+};
+
 /// §3.3: from each end of a broken edge, a breadth-first walk through at most `max_walk`
-/// non-edge vertices; when it reaches another piece of edge, the path becomes edge.
+/// non-edge vertices; when it reaches another piece of edge, the path becomes edge. Ends are
+/// taken in geometric order. Bridging only adds edge vertices, and a path vertex has two edge
+/// neighbours, so the ends are those found at the start that are still ends when their turn
+/// comes. Ends go in sweep order (geometric_order.h).
 std::size_t bridge_broken_edges(const Mesh& mesh, const Connectivity& c, int max_walk,
                                 std::vector<std::uint8_t>& is_edge) {
     std::vector<Index> first_piece = label_edge_pieces(mesh, c, is_edge);
     DisjointSets pieces(is_edge.size());
     auto piece_of = [&](Index v) { return pieces.find(first_piece[v]); };
-    std::vector<Index> parent(is_edge.size(), kNoIndex);
-    std::vector<Index> touched;
-    std::deque<Index> queue;
+    std::vector<Index> ends;
+    for (Index v = 0; v < is_edge.size(); ++v) {
+        if (is_edge[v] && is_edge_end(mesh, c, is_edge, v)) ends.push_back(v);
+    }
+    std::sort(ends.begin(), ends.end(),
+              [&](Index a, Index b) { return vertex_swept_before(mesh, a, b); });
+    BridgeWalk walk(is_edge.size());
     std::size_t added = 0;
-    for (Index end = 0; end < is_edge.size(); ++end) {
-        if (!is_edge[end] || !is_edge_end(mesh, c, is_edge, end)) continue;
-        queue.assign(1, end);
-        parent[end] = end;
-        touched.assign(1, end);
-        int walked = 0;
-        Index reached = kNoIndex;
-        // Bound: at most P (max_walk) vertices walked from each end, each visiting its ring.
-        while (!queue.empty() && reached == kNoIndex && walked <= max_walk) {
-            const Index v = queue.front();
-            queue.pop_front();
-            if (v != end) ++walked;
-            for_each_ring_vertex(mesh, c, v, [&](Index j) {
-                if (reached != kNoIndex || parent[j] != kNoIndex) return;
-                if (is_edge[j]) {
-                    if (piece_of(j) != piece_of(end)) {
-                        parent[j] = v;
-                        touched.push_back(j);
-                        reached = j;
-                    }
-                    return;
-                }
-                parent[j] = v;
-                touched.push_back(j);
-                queue.push_back(j);
-            });
+    for (Index end : ends) {  // Bound: the ends found at the start
+        if (!is_edge_end(mesh, c, is_edge, end)) continue;
+        const Index reached = walk.walk(mesh, c, is_edge, end, max_walk, piece_of);
+        if (reached == kNoIndex) continue;
+        pieces.unite(piece_of(reached), piece_of(end));
+        for (Index v = walk.parent(reached); v != end; v = walk.parent(v)) {
+            is_edge[v] = 1;
+            first_piece[v] = first_piece[end];
+            ++added;
         }
-        if (reached != kNoIndex) {
-            pieces.unite(piece_of(reached), piece_of(end));
-            for (Index v = parent[reached]; v != end; v = parent[v]) {
-                is_edge[v] = 1;
-                first_piece[v] = first_piece[end];
-                ++added;
-            }
-        }
-        for (Index v : touched) parent[v] = kNoIndex;
     }
     return added;
 }

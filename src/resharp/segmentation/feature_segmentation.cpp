@@ -8,6 +8,7 @@
 
 #include "resharp/core/disjoint_sets.h"
 #include "resharp/core/errors.h"
+#include "resharp/mesh/geometric_order.h"
 #include "resharp/mesh/geometry.h"
 
 namespace resharp {
@@ -27,11 +28,34 @@ void validate(const FeatureSegmentationOptions& o) {
     }
 }
 
+/// The corners of face f sorted by vertex_swept_before(): faces compare by these, which neither the
+/// face's index nor the rotation of its corners changes.
+std::array<Index, 3> sorted_corners(const Mesh& mesh, Index f) {
+    std::array<Index, 3> t = mesh.triangles[f];
+    auto before = [&](Index a, Index b) { return vertex_swept_before(mesh, a, b); };
+    if (before(t[1], t[0])) std::swap(t[0], t[1]);
+    if (before(t[2], t[1])) std::swap(t[1], t[2]);
+    if (before(t[1], t[0])) std::swap(t[0], t[1]);
+    return t;
+}
+
+/// Faces f and g, given their sorted_corners() a and b, in geometric order.
+bool corners_before(const Mesh& mesh, const std::array<Index, 3>& a, const std::array<Index, 3>& b,
+                    Index f, Index g) {
+    for (int k = 0; k < 3; ++k) {
+        if (a[k] != b[k]) return vertex_swept_before(mesh, a[k], b[k]);
+    }
+    return f < g;  // the same three vertices: a duplicate face
+}
+
 /// §4 steps 1-3: breadth-first growth across manifold edges while neighbouring face normals
 /// differ by less than the angle. A region holding `curved_limit` faces (0: no limit) only
 /// takes faces within the angle of its seed (FeatureSegmentationOptions::curved_region_faces).
 /// The queue keeps every face of the region, so its size is the region's. Seeds are taken in
-/// face order, so ids are deterministic.
+/// face order, so ids follow the face order and are never compared where a tie must not depend
+/// on it (wins_tie()). Without the limit a region is a connected component of the growth
+/// relation, whatever the seed; a curved region that reaches the limit depends on its seed and
+/// on the order of growth (docs/robustness.md).
 std::vector<Index> grow_regions(const Connectivity& c, const std::vector<Vec3>& normals,
                                 double max_angle_deg, std::size_t curved_limit,
                                 std::size_t& region_count) {
@@ -353,18 +377,39 @@ std::size_t compact_ids(std::vector<Index>& face_patch, std::size_t id_bound) {
     return next;
 }
 
-/// §4 step 4: each vertex joins the patch with the most faces in its one-ring (ties: lower id).
-/// `single`: single_ring_patches() of face_patch.
+/// Whether patch p wins a tie of votes at v against patch q: the patch reaching lower in z
+/// (`lowest`: per patch, the least z of its vertices), as it went to the lower id when ids followed
+/// a mesher's face order, which sweeps the grid slab by slab; patches reaching as low by the first
+/// face around v in geometric order (corners_before()).
+bool wins_tie(const Mesh& mesh, const Connectivity& c, const std::vector<Index>& face_patch,
+              const std::vector<double>& lowest, Index v, Index p, Index q) {
+    if (lowest[p] != lowest[q]) return lowest[p] < lowest[q];
+    Index first = kNoIndex;
+    std::array<Index, 3> first_corners{};
+    for (Index f : c.faces_around(v)) {
+        if (face_patch[f] != p && face_patch[f] != q) continue;
+        const std::array<Index, 3> corners = sorted_corners(mesh, f);
+        if (first == kNoIndex || corners_before(mesh, corners, first_corners, f, first)) {
+            first = f;
+            first_corners = corners;
+        }
+    }
+    return face_patch[first] == p;
+}
+
+/// §4 step 4: each vertex joins the patch with the most faces in its one-ring (ties:
+/// wins_tie(), not ids, which follow the face order). `single`: single_ring_patches() of
+/// face_patch; `count`: the number of patches.
 std::vector<Index> label_vertices(const Mesh& mesh, const Connectivity& c,
                                   const std::vector<Index>& face_patch,
-                                  const std::vector<Index>& single) {
+                                  const std::vector<Index>& single, std::size_t count) {
     std::vector<Index> label(mesh.vertex_count(), kNoIndex);
+    // Per patch, the least z of its vertices (exact: a least value, not a sum, so a scaled or
+    // moved part keeps its order and its ties), gathered on the way; ties wait for it.
+    std::vector<double> lowest(count, std::numeric_limits<double>::infinity());
+    std::vector<Index> tied;
     std::vector<std::pair<Index, int>> counts;
-    for (Index v = 0; v < mesh.vertex_count(); ++v) {
-        if (single[v] != kMixedRing) {
-            label[v] = single[v];  // kNoIndex too: all faces in bands
-            continue;
-        }
+    auto count_votes = [&](Index v) {
         counts.clear();
         for (Index f : c.faces_around(v)) {
             const Index p = face_patch[f];
@@ -376,9 +421,33 @@ std::vector<Index> label_vertices(const Mesh& mesh, const Connectivity& c,
             else
                 ++it->second;
         }
+    };
+    for (Index v = 0; v < mesh.vertex_count(); ++v) {
+        const double z = mesh.positions[v].z();
+        if (single[v] != kMixedRing) {
+            label[v] = single[v];  // kNoIndex too: all faces in bands
+            if (single[v] != kNoIndex) lowest[single[v]] = std::min(lowest[single[v]], z);
+            continue;
+        }
+        count_votes(v);
+        int best = 0;
+        bool tie = false;
+        for (const auto& [p, n] : counts) {
+            lowest[p] = std::min(lowest[p], z);
+            tie = n == best || (tie && n < best);
+            if (n > best) {
+                best = n;
+                label[v] = p;
+            }
+        }
+        if (tie) tied.push_back(v);
+    }
+    // Bound: the tied vertices, each counted again.
+    for (Index v : tied) {
+        count_votes(v);
         int best = 0;
         for (const auto& [p, n] : counts) {
-            if (n > best || (n == best && p < label[v])) {
+            if (n > best || (n == best && wins_tie(mesh, c, face_patch, lowest, v, p, label[v]))) {
                 best = n;
                 label[v] = p;
             }
@@ -407,6 +476,11 @@ double elevation_from_patch(const Mesh& mesh, const Connectivity& c,
 /// degrees, far above what the curvature of a machined surface gives between grid neighbours
 /// (h / 2r) and far below the dihedral angle of an edge worth restoring.
 constexpr double kOnPlaneSine = 0.2;
+
+/// Sines of elevation this close are equal: a vertex on two patches' planes at once is at 0 from
+/// both, and rounding, which the part's scale and position change, must not choose between
+/// them. Ties keep the vote, then the candidate of lower id.
+constexpr double kElevationTie = 1e-9;
 
 /// The patches a vertex could lie on: those of its faces, or, for a vertex whose faces all lie
 /// in bands, those of its labelled neighbours. A vertex with faces of a single patch (and band
@@ -446,7 +520,8 @@ std::vector<Index> refine_border_labels(const Mesh& mesh, const Connectivity& c,
         Index best_patch = label[v];
         for (Index p : candidates) {
             const double e = elevation_from_patch(mesh, c, normals, face_patch, label, v, p);
-            if (e < best || (e == best && p == label[v])) {
+            const bool tie = e == best || std::abs(e - best) <= kElevationTie;
+            if (e < best - kElevationTie || (tie && p == label[v])) {
                 best = e;
                 best_patch = p;
             }
@@ -499,8 +574,9 @@ FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& conne
     s.patch_count = compact_ids(region, s.grown_patches);
     single = carry_single_patches(connectivity, region, std::move(single));
     s.face_patch = std::move(region);
-    s.vertex_patch = refine_border_labels(mesh, connectivity, face_normals, s.face_patch, single,
-                                          label_vertices(mesh, connectivity, s.face_patch, single));
+    s.vertex_patch = refine_border_labels(
+        mesh, connectivity, face_normals, s.face_patch, single,
+        label_vertices(mesh, connectivity, s.face_patch, single, s.patch_count));
     return s;
 }
 
