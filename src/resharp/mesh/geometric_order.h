@@ -34,19 +34,13 @@ inline bool sweep_less(const Vec3& a, const Vec3& b) {
 /// Vertices ordered by position; coincident vertices by index (the only order they have).
 inline bool vertex_before(const Mesh& mesh, Index a, Index b) {
     const Vec3 &pa = mesh.positions[a], &pb = mesh.positions[b];
-    if (pa.x() != pb.x()) return pa.x() < pb.x();
-    if (pa.y() != pb.y()) return pa.y() < pb.y();
-    if (pa.z() != pb.z()) return pa.z() < pb.z();
-    return a < b;
+    return pa != pb ? lexicographically_less(pa, pb) : a < b;
 }
 
 /// Vertices in sweep_less() order; coincident vertices by index.
 inline bool vertex_swept_before(const Mesh& mesh, Index a, Index b) {
     const Vec3 &pa = mesh.positions[a], &pb = mesh.positions[b];
-    if (pa.z() != pb.z()) return pa.z() < pb.z();
-    if (pa.y() != pb.y()) return pa.y() < pb.y();
-    if (pa.x() != pb.x()) return pa.x() < pb.x();
-    return a < b;
+    return pa != pb ? sweep_less(pa, pb) : a < b;
 }
 
 /// Sorts vertex indices by vertex_before().
