@@ -38,6 +38,13 @@ Vec3 triangle_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
     return unit_or_zero((b - a).cross(c - a));
 }
 
+double longest_edge_squared(const Mesh& mesh, Index f) {
+    const Triangle& t = mesh.triangles[f];
+    const auto& x = mesh.positions;
+    return std::max({(x[t[1]] - x[t[0]]).squaredNorm(), (x[t[2]] - x[t[1]]).squaredNorm(),
+                     (x[t[0]] - x[t[2]]).squaredNorm()});
+}
+
 double corner_angle(const Mesh& mesh, Index f, int k) {
     const Triangle& t = mesh.triangles[f];
     const Vec3& p = mesh.positions[t[k]];

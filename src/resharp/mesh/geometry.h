@@ -12,6 +12,9 @@ namespace resharp {
 /// Unit normal of triangle (a, b, c) by the right-hand rule; zero for a degenerate triangle.
 Vec3 triangle_normal(const Vec3& a, const Vec3& b, const Vec3& c);
 
+/// Squared length of face f's longest edge: the face's size, which relative tolerances scale by.
+double longest_edge_squared(const Mesh& mesh, Index f);
+
 /// Interior angle (radians) at corner k of face f.
 double corner_angle(const Mesh& mesh, Index f, int k);
 

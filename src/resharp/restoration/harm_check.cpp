@@ -478,7 +478,7 @@ private:
             against = std::min(against, distance_squared(q, candidates.faces[j]));
         }
         if (against == kInfinity) return false;  // no face turned against is near enough
-        const double tie = kTouchRatio * std::sqrt(longest_edge_squared(f));
+        const double tie = kTouchRatio * std::sqrt(longest_edge_squared(input_.mesh, f));
         const double reach = std::sqrt(against) + tie;  // as near as the faces turned against
         if (!(reach < std::sqrt(other))) return false;
         for (std::size_t j = 0; j < candidates.faces.size(); ++j) {
@@ -490,13 +490,6 @@ private:
             if (distance_squared(q, g) <= reach * reach) return false;
         }
         return true;
-    }
-
-    double longest_edge_squared(Index g) const {
-        const Triangle& t = input_.mesh.triangles[g];
-        const auto& x = input_.mesh.positions;
-        return std::max({(x[t[1]] - x[t[0]]).squaredNorm(), (x[t[2]] - x[t[1]]).squaredNorm(),
-                         (x[t[0]] - x[t[2]]).squaredNorm()});
     }
 
     /// A lower bound of the squared distance from q to the face in `box`, shrunk far beyond

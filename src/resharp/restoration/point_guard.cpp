@@ -100,7 +100,7 @@ private:
     Fault piece_fault(Index f, Index a, Index b, Index c) const {
         const Vec3 n =
             (ids_.position(b) - ids_.position(a)).cross(ids_.position(c) - ids_.position(a));
-        const double extent_squared = longest_edge_squared(f);
+        const double extent_squared = longest_edge_squared(input_.mesh, f);
         if (n.norm() <= kCollapsedAreaRatio * extent_squared) return Fault::Quality;
         const bool thin = spans_thin_material(a, b, c);
         const Vec3& face_normal = input_.normals.face[f];
@@ -120,17 +120,6 @@ private:
         }
         if (!face_leans_past_surface && n.dot(face_normal) <= 0.0) return Fault::Guard;
         return found;
-    }
-
-    double longest_edge_squared(Index f) const {
-        const Triangle& t = input_.mesh.triangles[f];
-        double longest = 0.0;
-        for (int k = 0; k < 3; ++k) {
-            longest = std::max(longest,
-                               (input_.mesh.positions[t[(k + 1) % 3]] - input_.mesh.positions[t[k]])
-                                   .squaredNorm());
-        }
-        return longest;
     }
 
     bool spans_thin_material(Index a, Index b, Index c) const {
