@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <span>
 #include <tuple>
 
 #include "resharp/core/disjoint_sets.h"
@@ -28,60 +29,117 @@ void validate(const FeatureSegmentationOptions& o) {
     }
 }
 
-/// The corners of face f sorted by vertex_swept_before(): faces compare by these, which neither the
-/// face's index nor the rotation of its corners changes.
-std::array<Index, 3> sorted_corners(const Mesh& mesh, Index f) {
-    std::array<Index, 3> t = mesh.triangles[f];
-    auto before = [&](Index a, Index b) { return vertex_swept_before(mesh, a, b); };
-    if (before(t[1], t[0])) std::swap(t[0], t[1]);
-    if (before(t[2], t[1])) std::swap(t[1], t[2]);
-    if (before(t[1], t[0])) std::swap(t[0], t[1]);
-    return t;
+/// The half-edges of face f in geometric order: across the edge opposite its first corner in
+/// sweep order first. A face's index, the rotation of its corners and its orientation leave it.
+std::array<Index, 3> halfedges_in_sweep_order(const Mesh& mesh, Index f) {
+    const std::array<Index, 3> corners = corners_in_sweep_order(mesh, f);
+    const std::array<Index, 3>& t = mesh.triangles[f];
+    std::array<Index, 3> order{};
+    for (int k = 0; k < 3; ++k) {
+        const int j = t[0] == corners[k] ? 0 : (t[1] == corners[k] ? 1 : 2);
+        order[k] = 3 * f + (j + 1) % 3;  // half-edge (j + 1) % 3 is opposite corner j
+    }
+    return order;
 }
 
-/// Faces f and g, given their sorted_corners() a and b, in geometric order.
-bool corners_before(const Mesh& mesh, const std::array<Index, 3>& a, const std::array<Index, 3>& b,
-                    Index f, Index g) {
-    for (int k = 0; k < 3; ++k) {
-        if (a[k] != b[k]) return vertex_swept_before(mesh, a[k], b[k]);
+/// Whether every two faces of `faces` have normals within max_angle_deg of each other: true
+/// when all lie within half that angle of their mean direction (a sufficient test, O(faces)). Then a seed's normal never refuses a face of them, whichever face seeds.
+bool normals_within_angle(const std::vector<Vec3>& normals, std::span<const Index> faces,
+                          double max_angle_deg) {
+    Vec3 mean = Vec3::Zero();
+    for (Index f : faces) mean += normals[f];
+    const double length = mean.norm();
+    if (length == 0.0) return false;
+    mean /= length;
+    const double min_cosine = std::cos(0.5 * max_angle_deg * kDegree);
+    return std::all_of(faces.begin(), faces.end(),
+                       [&](Index f) { return mean.dot(normals[f]) >= min_cosine; });
+}
+
+/// Growth settings shared by the two passes of grow_regions().
+struct Growth {
+    const Mesh& mesh;
+    const Connectivity& c;
+    const std::vector<Vec3>& normals;
+    double min_cosine;  // of the growing angle
+    std::size_t curved_limit;
+};
+
+/// Breadth-first growth of region `id` from `seed` over faces whose region is `open`, across
+/// manifold edges whose faces' normals differ by less than the angle; past `curved_limit` faces
+/// only into faces within the angle of the seed (0: no limit). Leaves the region's faces in
+/// `taken`, in the order taken. In sweep order each face's half-edges are crossed in geometric
+/// order, so the region does not depend on how the mesh numbers its faces or corners.
+void grow_from(const Growth& g, Index seed, Index open, Index id, bool sweep_order,
+               std::vector<Index>& region, std::vector<Index>& taken) {
+    taken.assign(1, seed);
+    region[seed] = id;
+    // Bound: a face joins a region, and `taken`, once.
+    for (std::size_t head = 0; head < taken.size(); ++head) {
+        const Index u = taken[head];
+        // Past the limit the region is every face reachable under both tests from those taken
+        // so far, whatever the order: only the first curved_limit faces depend on it.
+        const bool in_order = sweep_order && taken.size() < g.curved_limit;
+        const std::array<Index, 3> halfedges =
+            in_order ? halfedges_in_sweep_order(g.mesh, u)
+                     : std::array<Index, 3>{3 * u, 3 * u + 1, 3 * u + 2};
+        for (Index h : halfedges) {
+            const Index twin = g.c.twin[h];
+            if (twin == kNoIndex) continue;
+            const Index v = face_of(twin);
+            if (region[v] != open || g.normals[u].dot(g.normals[v]) <= g.min_cosine) continue;
+            const bool limited = g.curved_limit != 0 && taken.size() >= g.curved_limit;
+            if (limited && g.normals[seed].dot(g.normals[v]) <= g.min_cosine) continue;
+            region[v] = id;
+            taken.push_back(v);
+        }
     }
-    return f < g;  // the same three vertices: a duplicate face
+}
+
+/// Grows the faces of one component again as limited regions, seeded in sweep order: the first
+/// face not yet taken seeds the next region, as the face order of a mesher sweeping its grid
+/// slab by slab would. Numbers them from `next`; returns the next id.
+Index regrow_in_sweep_order(const Growth& g, std::span<const Index> component, Index next,
+                            std::vector<Index>& region) {
+    constexpr Index kOpen = kNoIndex - 1;  // ids stay below #F
+    for (Index f : component) region[f] = kOpen;
+    FacesInSweepOrder seeds(g.mesh, component);
+    auto open = [&](Index f) { return region[f] == kOpen; };
+    std::vector<Index> taken;
+    // Bound: every seed starts a region that takes at least itself, so at most |component|.
+    for (Index seed = seeds.next(open); seed != kNoIndex; seed = seeds.next(open)) {
+        grow_from(g, seed, kOpen, next++, true, region, taken);
+    }
+    return next;
 }
 
 /// §4 steps 1-3: breadth-first growth across manifold edges while neighbouring face normals
 /// differ by less than the angle. A region holding `curved_limit` faces (0: no limit) only
-/// takes faces within the angle of its seed (FeatureSegmentationOptions::curved_region_faces).
-/// The queue keeps every face of the region, so its size is the region's. Seeds are taken in
-/// face order, so ids follow the face order and are never compared where a tie must not depend
-/// on it (wins_tie()). Without the limit a region is a connected component of the growth
-/// relation, whatever the seed; a curved region that reaches the limit depends on its seed and
-/// on the order of growth (docs/robustness.md).
-std::vector<Index> grow_regions(const Connectivity& c, const std::vector<Vec3>& normals,
-                                double max_angle_deg, std::size_t curved_limit,
-                                std::size_t& region_count) {
-    const double min_cosine = std::cos(max_angle_deg * kDegree);
+/// takes faces within the angle of its seed (FeatureSegmentationOptions::curved_region_faces),
+/// so it depends on where it starts. Every component of the growth relation is grown once
+/// without the limit; one of more than `curved_limit` faces whose normals the limit could
+/// refuse (normals_within_angle()) is grown again with seeds and neighbours in geometric order,
+/// so which faces share a region does not depend on the face order, the corners' rotation or
+/// the orientation (issue 12). Ids follow the face order of the components' first faces; they
+/// are never compared where a tie must not depend on it (wins_tie()).
+std::vector<Index> grow_regions(const Mesh& mesh, const Connectivity& c,
+                                const std::vector<Vec3>& normals, double max_angle_deg,
+                                std::size_t curved_limit, std::size_t& region_count) {
+    const Growth unlimited{mesh, c, normals, std::cos(max_angle_deg * kDegree), 0};
+    const Growth limited{mesh, c, normals, unlimited.min_cosine, curved_limit};
     std::vector<Index> region(normals.size(), kNoIndex);
-    std::vector<Index> queue;
+    std::vector<Index> component;
     Index next = 0;
+    // Bound: each seed takes at least itself, so at most #F components.
     for (Index seed = 0; seed < normals.size(); ++seed) {
         if (region[seed] != kNoIndex) continue;
-        region[seed] = next;
-        queue.assign(1, seed);
-        // Bound: a face joins a region, and the queue, once.
-        for (std::size_t head = 0; head < queue.size(); ++head) {
-            const Index u = queue[head];
-            for (Index k = 0; k < 3; ++k) {
-                const Index twin = c.twin[3 * u + k];
-                if (twin == kNoIndex) continue;
-                const Index v = face_of(twin);
-                if (region[v] != kNoIndex || normals[u].dot(normals[v]) <= min_cosine) continue;
-                const bool limited = curved_limit != 0 && queue.size() >= curved_limit;
-                if (limited && normals[seed].dot(normals[v]) <= min_cosine) continue;
-                region[v] = next;
-                queue.push_back(v);
-            }
+        grow_from(unlimited, seed, kNoIndex, next, false, region, component);
+        if (curved_limit == 0 || component.size() <= curved_limit ||
+            normals_within_angle(normals, component, max_angle_deg)) {
+            ++next;
+        } else {
+            next = regrow_in_sweep_order(limited, component, next, region);
         }
-        ++next;
     }
     region_count = next;
     return region;
@@ -380,7 +438,7 @@ std::size_t compact_ids(std::vector<Index>& face_patch, std::size_t id_bound) {
 /// Whether patch p wins a tie of votes at v against patch q: the patch reaching lower in z
 /// (`lowest`: per patch, the least z of its vertices), as it went to the lower id when ids followed
 /// a mesher's face order, which sweeps the grid slab by slab; patches reaching as low by the first
-/// face around v in geometric order (corners_before()).
+/// face around v in geometric order (face_swept_before()).
 bool wins_tie(const Mesh& mesh, const Connectivity& c, const std::vector<Index>& face_patch,
               const std::vector<double>& lowest, Index v, Index p, Index q) {
     if (lowest[p] != lowest[q]) return lowest[p] < lowest[q];
@@ -388,8 +446,8 @@ bool wins_tie(const Mesh& mesh, const Connectivity& c, const std::vector<Index>&
     std::array<Index, 3> first_corners{};
     for (Index f : c.faces_around(v)) {
         if (face_patch[f] != p && face_patch[f] != q) continue;
-        const std::array<Index, 3> corners = sorted_corners(mesh, f);
-        if (first == kNoIndex || corners_before(mesh, corners, first_corners, f, first)) {
+        const std::array<Index, 3> corners = corners_in_sweep_order(mesh, f);
+        if (first == kNoIndex || face_swept_before(mesh, corners, first_corners, f, first)) {
             first = f;
             first_corners = corners;
         }
@@ -554,7 +612,7 @@ FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& conne
     validate(options);
     FeatureSegmentation s;
     std::vector<Index> region =
-        grow_regions(connectivity, face_normals, options.max_normal_angle_deg,
+        grow_regions(mesh, connectivity, face_normals, options.max_normal_angle_deg,
                      options.curved_region_faces, s.grown_patches);
     const PatchCensus census =
         take_census(mesh, connectivity, region, s.grown_patches, is_edge_vertex);
