@@ -38,10 +38,19 @@ FacesInSweepOrder::FacesInSweepOrder(const Mesh& mesh, std::span<const Index> fa
     for (std::size_t i = 0; i < faces.size(); ++i) by_slab_[fill[slab_of(z[i])]++] = faces[i];
 }
 
+FacesInSweepOrder::KeyedFace FacesInSweepOrder::keyed(Index f) const {
+    const Vec3& p = mesh_.positions[corners_in_sweep_order(mesh_, f)[0]];
+    return {{p.z(), p.y(), p.x()}, f};
+}
+
 void FacesInSweepOrder::sort_current() {
-    std::sort(current_.begin(), current_.end(), [&](Index f, Index g) {
-        return face_swept_before(mesh_, corners_in_sweep_order(mesh_, f),
-                                 corners_in_sweep_order(mesh_, g), f, g);
+    std::sort(current_.begin(), current_.end(), [&](const KeyedFace& a, const KeyedFace& b) {
+        for (int k = 0; k < 3; ++k) {
+            if (a.first_corner[k] != b.first_corner[k])
+                return a.first_corner[k] < b.first_corner[k];
+        }
+        return face_swept_before(mesh_, corners_in_sweep_order(mesh_, a.face),
+                                 corners_in_sweep_order(mesh_, b.face), a.face, b.face);
     });
 }
 

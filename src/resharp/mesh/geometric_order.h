@@ -89,7 +89,7 @@ public:
         // Bound: each call moves the cursor past each face at most once over all calls.
         while (true) {
             while (cursor_ < current_.size()) {
-                const Index f = current_[cursor_++];
+                const Index f = current_[cursor_++].face;
                 if (open(f)) return f;
             }
             if (slab_ + 1 >= slab_start_.size()) return kNoIndex;
@@ -102,19 +102,26 @@ private:
     void take_slab(Open& open) {
         current_.clear();
         for (std::size_t i = slab_start_[slab_]; i < slab_start_[slab_ + 1]; ++i) {
-            if (open(by_slab_[i])) current_.push_back(by_slab_[i]);
+            if (open(by_slab_[i])) current_.push_back(keyed(by_slab_[i]));
         }
         ++slab_;
         sort_current();
         cursor_ = 0;
     }
+    /// A face with the position of its first corner, (z, y, x): most comparisons end there,
+    /// without reading the mesh again.
+    struct KeyedFace {
+        std::array<double, 3> first_corner;
+        Index face;
+    };
+    KeyedFace keyed(Index f) const;
     void sort_current();
 
     const Mesh& mesh_;
     std::vector<Index> by_slab_;           // the faces, slab after slab
     std::vector<std::size_t> slab_start_;  // slab s is by_slab_[slab_start_[s], slab_start_[s + 1])
     std::size_t slab_ = 0;                 // the next slab to take
-    std::vector<Index> current_;           // the open faces of the slab taken last, sorted
+    std::vector<KeyedFace> current_;       // the open faces of the slab taken last, sorted
     std::size_t cursor_ = 0;
 };
 
