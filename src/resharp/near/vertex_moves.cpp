@@ -404,6 +404,31 @@ VertexMoves without_moves_of(const Mesh& mesh, const VertexMoves& moves,
     return fewer;
 }
 
+namespace {
+
+/// The input faces split in `split_of_moved` or left whole there with a moved corner, ascending:
+/// those whose output faces are not the input face itself once the moved corners are new
+/// vertices.
+std::vector<Index> altered_by_moves(const VertexMoves& moves, const SplitMesh& split_of_moved) {
+    const Index vertices = static_cast<Index>(moves.moved.size());
+    std::vector<Index> altered;
+    altered.reserve(split_of_moved.altered_faces.size());
+    auto split = split_of_moved.altered_faces.begin();
+    const auto split_end = split_of_moved.altered_faces.end();
+    for (Index o = 0; o < split_of_moved.source_face.size(); ++o) {
+        const Index f = split_of_moved.source_face[o];
+        if (!altered.empty() && altered.back() == f) continue;
+        while (split != split_end && *split < f) ++split;
+        const bool moved = std::any_of(split_of_moved.mesh.triangles[o].begin(),
+                                       split_of_moved.mesh.triangles[o].end(),
+                                       [&](Index v) { return v < vertices && moves.moved[v]; });
+        if (moved || (split != split_end && *split == f)) altered.push_back(f);
+    }
+    return altered;
+}
+
+}  // namespace
+
 SplitMesh moves_as_split(const Mesh& input, const VertexMoves& moves,
                          const SplitMesh& split_of_moved) {
     const Index vertices = static_cast<Index>(input.vertex_count());
@@ -426,6 +451,7 @@ SplitMesh moves_as_split(const Mesh& input, const VertexMoves& moves,
         out.mesh.triangles.push_back({renumbered[t[0]], renumbered[t[1]], renumbered[t[2]]});
     out.source_face = split_of_moved.source_face;
     out.split_faces = split_of_moved.split_faces;
+    out.altered_faces = altered_by_moves(moves, split_of_moved);
     return out;
 }
 

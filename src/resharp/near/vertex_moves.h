@@ -101,8 +101,9 @@ VertexMoves without_moves_of(const Mesh& mesh, const VertexMoves& moves,
 /// The split of the moved mesh as a split of the input itself: the input's vertices first,
 /// unchanged, then the moved vertices' new places (in vertex order), then the split's new
 /// points; faces as in `split_of_moved`, their corners renumbered. The harm check then holds
-/// every moved face, split or not, against the input surface it replaces. Its
-/// point_of_new_vertex is left empty (the check does not read it).
+/// every moved face, split or not, against the input surface it replaces: its altered_faces are
+/// the split faces and the faces with a moved corner. Its point_of_new_vertex is left empty (the
+/// check does not read it).
 SplitMesh moves_as_split(const Mesh& input, const VertexMoves& moves,
                          const SplitMesh& split_of_moved);
 

@@ -98,12 +98,6 @@ bool boxes_apart(const Box3& a, const Box3& b, double tolerance) {
     return false;
 }
 
-/// Whether two triangles have the same corners in the same order. (Triangle's operator==, a
-/// library memcmp call, costs several times this on the face of every run.)
-bool same_corners(const Triangle& a, const Triangle& b) {
-    return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
-}
-
 /// What the checks found on one split face's pieces.
 struct FaceVerdict {
     std::uint32_t turned = 0, folded = 0, crossing = 0;
@@ -130,25 +124,27 @@ public:
     SplitFaces(const SplitMesh& output, const Mesh& input) : number_(input.face_count(), kNoIndex) {
         const Index* source = output.source_face.data();
         const Index count = static_cast<Index>(output.source_face.size());
-        face_.reserve(output.split_faces);
-        first_output_.reserve(output.split_faces);
-        first_piece_.reserve(output.split_faces + 1);
-        // A split face's pieces are the runs of one source face; a run starts where the next
-        // output face has the same source. A run of one face is a split face too where its
-        // corners are not the input face's: the face moved (moved vertices come as new ones).
-        for (Index o = 0; o < count; ++o) {
+        const std::size_t altered = output.altered_faces.size();
+        face_.reserve(altered);
+        first_output_.reserve(altered);
+        first_piece_.reserve(altered + 1);
+        // The split faces are the altered ones: a split face's pieces are the run of its
+        // output faces, and every face before it that is not altered is one output face, so
+        // its run starts where the runs before it put it.
+        Index extra = 0;  // output faces beyond one per input face, before f's
+        for (Index f : output.altered_faces) {
+            const Index o = f + extra;
             Index end = o + 1;
-            while (end < count && source[end] == source[o]) ++end;
-            if (end == o + 1 && same_corners(output.mesh.triangles[o], input.triangles[source[o]]))
-                continue;
-            number_[source[o]] = static_cast<Index>(face_.size());
-            face_.push_back(source[o]);
+            while (end < count && source[end] == f) ++end;
+            number_[f] = static_cast<Index>(face_.size());
+            face_.push_back(f);
             first_output_.push_back(o);
             first_piece_.push_back(piece_count_);
             piece_count_ += end - o;
-            o = end - 1;
+            extra += end - o - 1;
         }
         first_piece_.push_back(piece_count_);
+        RESHARP_EXPENSIVE_ASSERT(is_as_scanned(output, input));
     }
 
     std::size_t size() const { return face_.size(); }
@@ -163,6 +159,22 @@ public:
     Index piece_count(Index i) const { return first_piece_[i + 1] - first_piece_[i]; }
 
 private:
+    /// Whether the split faces are those a scan of every output face finds: the runs of more
+    /// than one face, and the runs of one whose corners are not their source's.
+    bool is_as_scanned(const SplitMesh& output, const Mesh& input) const {
+        std::vector<Index> scanned;
+        const auto& source = output.source_face;
+        for (std::size_t o = 0; o < source.size();) {
+            std::size_t end = o + 1;
+            while (end < source.size() && source[end] == source[o]) ++end;
+            if (end > o + 1 || output.mesh.triangles[o] != input.triangles[source[o]]) {
+                scanned.push_back(source[o]);
+            }
+            o = end;
+        }
+        return scanned == face_;
+    }
+
     std::vector<Index> number_;        ///< per input face (#F)
     std::vector<Index> face_;          ///< per split face (#S): its input face, ascending
     std::vector<Index> first_output_;  ///< per split face (#S)

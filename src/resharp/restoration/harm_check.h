@@ -34,11 +34,11 @@ struct HarmReport {
     bool is_harmless() const { return harmful_faces.empty(); }
 };
 
-/// Takes the input surface and its split; checks the pieces of every split face (faces left
-/// whole are the input's own and are not judged). A face of one piece whose corners are not the
-/// input face's is judged as a split face: near-surface restoration gives its moved vertices as
-/// new ones (near/vertex_moves.h). A fault between a piece and another split
-/// face's piece blames both faces.
+/// Takes the input surface and its split; checks the pieces of every split face, the faces
+/// the split lists as altered (faces left whole are the input's own and are not judged). A face
+/// of one piece whose corners are not the input face's is judged as a split face: near-surface
+/// restoration gives its moved vertices as new ones and lists its faces (near/vertex_moves.h).
+/// A fault between a piece and another split face's piece blames both faces.
 ///
 /// The crossing check (c) tests a piece against the output faces of the input faces within two
 /// rings of its own whose boxes meet the pieces' box, pairs sharing an edge left to the fold

@@ -46,7 +46,7 @@ void append_unchanged(const Mesh& mesh, Index begin, Index end, SplitMesh& out) 
 SplitMesh split_faces(const Mesh& mesh, std::span<const Vec3> points, const PointSlots& slots) {
     const PieceVertices ids(mesh, points);
     const Index original_count = static_cast<Index>(mesh.vertex_count());
-    const UsedPoints used = used_points(mesh.face_count(), points.size(), slots, original_count);
+    UsedPoints used = used_points(mesh.face_count(), points.size(), slots, original_count);
     const std::vector<Index>& number = used.number;
     const std::size_t used_count = static_cast<std::size_t>(
         std::count_if(number.begin(), number.end(), [](Index n) { return n != kNoIndex; }));
@@ -75,6 +75,8 @@ SplitMesh split_faces(const Mesh& mesh, std::span<const Vec3> points, const Poin
         next = f + 1;
     }
     append_unchanged(mesh, next, static_cast<Index>(mesh.face_count()), out);
+    // Every piece of a face with points holds a point, so no such face comes out as itself.
+    out.altered_faces = std::move(used.faces);
     return out;
 }
 

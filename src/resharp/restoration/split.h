@@ -22,6 +22,11 @@ struct SplitMesh {
     /// Per new vertex (output vertex input_vertices + i): its index in the points list.
     std::vector<Index> point_of_new_vertex;
     std::size_t split_faces = 0;  ///< input faces replaced by pieces
+    /// The input faces whose output is not the input face itself, ascending: the faces replaced
+    /// by pieces and, in a split made of moves (near/vertex_moves.h), the faces with a moved
+    /// corner. Every other input face is one output face, its own. (So the harm check finds
+    /// the faces it judges without comparing every output face with its source.)
+    std::vector<Index> altered_faces;
 };
 
 /// Takes the input mesh, the points (#P) and the slots saying where each goes (as the guard
