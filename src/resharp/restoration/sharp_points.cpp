@@ -4,6 +4,7 @@
 
 #include "resharp/core/assert.h"
 #include "resharp/core/errors.h"
+#include "resharp/mesh/geometric_order.h"
 #include "resharp/mesh/geometry.h"
 #include "resharp/surfaces/junction.h"
 #include "resharp/surfaces/local_quadric.h"
@@ -202,17 +203,24 @@ Index holding_face(const Mesh& mesh, const Connectivity& c, const BandClassifica
     return kNoIndex;
 }
 
-/// The point of the crossing edge of half-edge h, if h is its lower half and both ends have
-/// feature normals (counted where not): on the edge where eq. 5.4 holds; with second-order
-/// placement, where it fails, in the face of the edge that holds the junction (nowhere if
-/// neither does).
+/// A point of a crossing edge beyond its chord, waiting for a face to hold it.
+struct PointBeyondChord {
+    Index halfedge;
+    Vec3 x;
+};
+
+/// The point of the crossing edge of half-edge h, if h runs from its end first in sweep order
+/// (so each edge is placed once, in the same direction whatever the corners' order) and both
+/// ends have feature normals (counted where not): on the edge where eq. 5.4 holds; with
+/// second-order placement, where it fails, handed to `beyond` for a face that holds it.
 void place_edge_point(const Mesh& mesh, const Connectivity& c, const BandClassification& bands,
                       const std::vector<Vec3>& normals, const SideSurfaces& sides, Index h,
-                      SharpPoints& out) {
+                      SharpPoints& out, std::vector<PointBeyondChord>& beyond) {
     const Index twin = c.twin[h];
-    if (!bands.is_crossing[h] || twin == kNoIndex || twin < h) return;  // each edge once
+    if (!bands.is_crossing[h] || twin == kNoIndex) return;
     const Index u = tail_vertex(mesh, h);
     const Index v = head_vertex(mesh, h);
+    if (!vertex_swept_before(mesh, u, v)) return;  // the twin places it
     const Vec3& a = mesh.positions[u];
     const Vec3& b = mesh.positions[v];
     if (normals[u].isZero(0.0) || normals[v].isZero(0.0)) {
@@ -226,32 +234,53 @@ void place_edge_point(const Mesh& mesh, const Connectivity& c, const BandClassif
         return;
     }
     const Vec3 x = sides.edge_point(u, v, *m, out.first_order_fallbacks);
-    const Index id = static_cast<Index>(out.points.size());
-    if (on_edge) {
-        out.slots.edge_point[h] = out.slots.edge_point[twin] = id;
-    } else {
-        const Index f = holding_face(mesh, c, bands, out, h, x);
-        if (f == kNoIndex) {
-            ++out.refused_by_flip_test;
-            return;
-        }
-        out.slots.corner_point[f] = id;
-        ++out.face_points;
+    if (!on_edge) {
+        beyond.push_back({h, x});
+        return;
     }
+    out.slots.edge_point[h] = out.slots.edge_point[twin] = static_cast<Index>(out.points.size());
     out.points.push_back(x);
     ++out.edge_points;
 }
 
-/// §5.2: the points of every crossing edge, in order of its lower half-edge; only faces with a
-/// crossing edge are looked at.
+/// Puts each point beyond its chord inside a face that holds it (holding_face()), in sweep order
+/// of their edges: two such points may want one face, and the first takes it, so the order must
+/// not be the mesh's.
+void place_points_beyond_chords(const Mesh& mesh, const Connectivity& c,
+                                const BandClassification& bands,
+                                std::vector<PointBeyondChord> beyond, SharpPoints& out) {
+    std::sort(
+        beyond.begin(), beyond.end(), [&](const PointBeyondChord& p, const PointBeyondChord& q) {
+            const Index pu = tail_vertex(mesh, p.halfedge), qu = tail_vertex(mesh, q.halfedge);
+            if (pu != qu) return vertex_swept_before(mesh, pu, qu);
+            return vertex_swept_before(mesh, head_vertex(mesh, p.halfedge),
+                                       head_vertex(mesh, q.halfedge));
+        });
+    for (const PointBeyondChord& p : beyond) {
+        const Index f = holding_face(mesh, c, bands, out, p.halfedge, p.x);
+        if (f == kNoIndex) {
+            ++out.refused_by_flip_test;
+            continue;
+        }
+        out.slots.corner_point[f] = static_cast<Index>(out.points.size());
+        out.points.push_back(p.x);
+        ++out.face_points;
+        ++out.edge_points;
+    }
+}
+
+/// §5.2: the points of every crossing edge; only faces with a crossing edge are looked at. Points
+/// on their edges first, in face order, then those inside faces.
 void place_edge_points(const Mesh& mesh, const Connectivity& c, const BandClassification& bands,
                        const std::vector<Vec3>& normals, const SideSurfaces& sides,
                        SharpPoints& out) {
+    std::vector<PointBeyondChord> beyond;
     for (Index f = 0; f < bands.face_role.size(); ++f) {
         if (bands.face_role[f] == BandRole::None) continue;  // no crossing edge: most faces
         for (Index h = 3 * f; h < 3 * f + 3; ++h)
-            place_edge_point(mesh, c, bands, normals, sides, h, out);
+            place_edge_point(mesh, c, bands, normals, sides, h, out, beyond);
     }
+    place_points_beyond_chords(mesh, c, bands, std::move(beyond), out);
 }
 
 /// §5.3: the normals around a corner triangle are its vertices' feature normals and the normals

@@ -62,8 +62,8 @@ struct PointSlots {
 };
 
 struct SharpPoints {
-    /// The new points: edge points in order of their edge's lower half-edge, then corner points
-    /// in face order.
+    /// The new points: points on crossing edges in face order, then points of crossing edges
+    /// inside faces in sweep order of their edges, then corner points in face order.
     std::vector<Vec3> points;
     PointSlots slots;  ///< where each point goes
     /// Points of crossing edges, the first `edge_points` of `points`; with those put inside a

@@ -43,7 +43,8 @@ std::array<Index, 3> halfedges_in_sweep_order(const Mesh& mesh, Index f) {
 }
 
 /// Whether every two faces of `faces` have normals within max_angle_deg of each other: true
-/// when all lie within half that angle of their mean direction (a sufficient test, O(faces)). Then a seed's normal never refuses a face of them, whichever face seeds.
+/// when all lie within half that angle of their mean direction (a sufficient test, O(faces)). Then
+/// a seed's normal never refuses a face of them, whichever face seeds.
 bool normals_within_angle(const std::vector<Vec3>& normals, std::span<const Index> faces,
                           double max_angle_deg) {
     Vec3 mean = Vec3::Zero();
