@@ -23,7 +23,6 @@ import json
 import os
 import subprocess
 import sys
-import struct
 import tempfile
 
 from results import git_head, load, machine, run
@@ -59,65 +58,6 @@ def restore(exe, mesh, restored, report):
         code = "timeout"
     seconds = (datetime.datetime.now() - start).total_seconds()
     return code == 0, code, seconds
-
-PLY_TYPES = {"char": "b", "uchar": "B", "short": "h", "ushort": "H", "int": "i", "uint": "I",
-             "float": "f", "double": "d"}
-
-
-def read_ply(path):
-    """The vertices (tuples of their properties, x y z first) and faces of a binary
-    little-endian PLY as resharp writes it (one list property on faces: uchar count, int
-    indices)."""
-    with open(path, "rb") as f:
-        data = f.read()
-    end = data.index(b"end_header\n") + len(b"end_header\n")
-    counts, vertex_format = {}, "<"
-    element = None
-    for line in data[:end].decode("ascii").splitlines():
-        words = line.split()
-        if words[:1] == ["element"]:
-            element = words[1]
-            counts[element] = int(words[2])
-        elif words[:1] == ["property"] and element == "vertex":
-            vertex_format += PLY_TYPES[words[1]]
-    size = struct.calcsize(vertex_format)
-    vertices = [struct.unpack_from(vertex_format, data, end + k * size)
-                for k in range(counts["vertex"])]
-    offset = end + counts["vertex"] * size
-    faces = [struct.unpack_from("<3i", data, offset + k * 13 + 1) for k in range(counts["face"])]
-    return vertices, faces
-
-
-def flipped_by_dot(oracle_path, restored_path, tie=1e-6):
-    """Among the restored faces not in the input, those with an input vertex whose oracle normal
-    makes a non-positive dot product with the face's normal (evaluate's flipped faces, less
-    those made of new points only), split by that lowest dot: (within `tie` of 0, below)."""
-    oracle, input_faces = read_ply(oracle_path)
-    positions, faces = read_ply(restored_path)
-    normal = {v[:3]: v[3:6] for v in oracle}
-
-    def key(face, points):  # the face's corners, starting at the smallest
-        corners = [points[i][:3] for i in face]
-        k = corners.index(min(corners))
-        return tuple(corners[k:] + corners[:k])
-
-    unchanged = {key(face, oracle) for face in input_faces}
-    perpendicular = turned = 0
-    for face in faces:
-        if key(face, positions) in unchanged:
-            continue
-        a, b, c = (positions[i] for i in face)
-        u = [b[j] - a[j] for j in range(3)]
-        w = [c[j] - a[j] for j in range(3)]
-        n = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]]
-        length = sum(x * x for x in n) ** 0.5
-        dots = [sum(n[j] * normal[p[:3]][j] for j in range(3)) / length
-                for p in (a, b, c) if p[:3] in normal] if length > 0 else []
-        if dots and min(dots) <= 0:
-            perpendicular += min(dots) >= -tie
-            turned += min(dots) < -tie
-    return perpendicular, turned
-
 
 def measure(exe, root, scratch, part, mesher):
     """Simulates, restores and evaluates one part with one mesher; gives the run's numbers."""
@@ -156,8 +96,6 @@ def measure(exe, root, scratch, part, mesher):
         "restore_seconds": r["time_seconds"]["total"],
         "restoration_rate": e["restoration_rate"],
     })
-    if mesher in OFF_SURFACE:
-        result["flipped_perpendicular"], result["flipped_below"] = flipped_by_dot(oracle, restored)
     return result
 
 
@@ -174,15 +112,6 @@ def harm(result):
     return [f"{key} {result[key]}" for key in keys if result[key] > 0]
 
 
-def flipped_cell(r):
-    """Evaluate's flipped faces (the input's own); on off-surface meshers also those of them with
-    an input vertex, at a dot product within 1e-6 of 0 and below."""
-    cell = f"{r['flipped']} ({r['flipped_input']})"
-    if "flipped_perpendicular" in r:
-        cell += f": {r['flipped_perpendicular']} at 0, {r['flipped_below']} below"
-    return cell
-
-
 def table(results):
     lines = ["| part | mesher | triangles in | finishes (restore s) | flipped (input's own) | "
              "boundary / non-manifold / inconsistent edges added | self-intersections added "
@@ -197,7 +126,7 @@ def table(results):
             continue
         lines.append(
             f"{head} {r['triangles_in']:,} | yes ({r['restore_seconds']:.2f}) | "
-            f"{flipped_cell(r)} | "
+            f"{r['flipped']} ({r['flipped_input']}) | "
             f"{r['boundary_added']:,} / {r['nonmanifold_added']:,} / {r['inconsistent_added']:,} | "
             f"{r['self_intersections_added']} ({r['self_intersections_input']}) | "
             f"{r['edge_points']:,} / {r['corner_points']} | "
@@ -226,8 +155,12 @@ def section(raw):
         f"triangles on {SEAMS} grid planes written twice, `--seam-duplicates {SEAMS}`, as "
         "parallel meshing jobs leave them), restored by `resharp restore` with default options "
         "on all cores, and scored by `resharp evaluate` against the simulator's oracle. "
-        "*Flipped*: output faces cut by the restoration whose normal has a non-positive dot "
-        "product with the exact normal at one of their input vertices (in brackets: the input's "
+        "*Flipped*: output faces cut by the restoration turned against the exact surface "
+        "(`src/resharp/eval/validity.h`): a non-positive dot product with the exact normal at one of their "
+        "input vertices; faces with a vertex off the surface (midpoint, surface nets, moved "
+        "vertices) judged at their centroid instead, turned more than 90 degrees against every "
+        "exact sample as near as the nearest plus their vertices' offset from the surface "
+        "(in brackets: the input's "
         "own faces that already are, from the mesher). *Added* counts are output minus input "
         "(negative where removing duplicate faces took seams' edges away); self-intersections "
         "are intersecting face pairs by CGAL's exact predicates. *Points undone*: points the harm "
@@ -241,12 +174,11 @@ def section(raw):
         "Runs that did not finish, added an edge defect or a self-intersection, or (on-surface "
         "meshers) flipped a face: " + ("; ".join(harmed) if harmed else "none") + ". Flipped "
         "faces on the off-surface meshers (midpoint, surface-nets): "
-        + ("; ".join(off_flipped) if off_flipped else "none") + ". There the criterion is "
-        "ambiguous: the oracle gives an off-surface vertex the normal of the exact surface point "
-        "nearest it, which beside an edge can be the other face's, so a restored face lying on "
-        "one face of a 90 degree edge meets that normal at a dot product of 0 (not turned) or a "
-        "little below, and counts (column *flipped*: of the faces with an input vertex, those "
-        "within 1e-6 of 0 and those below).",
+        + ("; ".join(off_flipped) if off_flipped else "none") + ". There a face lies as far off the surface as its mesher put its vertices, so beside "
+        "an edge it can lie nearer the other face of the edge than its own: one on the top of a "
+        "convex edge, overhanging the wall by the mesher's offset, would be turned 90 degrees "
+        "or a little more against the wall's normal; it counts only if it also turns against "
+        "the top's (`src/resharp/eval/validity.h`).",
         END,
     ])
 
@@ -302,7 +234,7 @@ def main():
             failed = failed or bool(problems)
             note = ""
             if r["finished"] and r["mesher"] in OFF_SURFACE:
-                note = f" (flipped {flipped_cell(r)}: reported, not failed)"
+                note = f" (flipped {r['flipped']} ({r['flipped_input']}): reported, not failed)"
             print(f"{r['part']} {r['mesher']}: " + (", ".join(problems) if problems else "no harm")
                   + note)
         return 1 if failed else 0

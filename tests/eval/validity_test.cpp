@@ -80,5 +80,31 @@ TEST(Validity, FlippedFacesOfOffSurfaceVerticesWhereTheyLie) {
     EXPECT_EQ(count_flipped_faces(input, reversed, off_surface, exact, FlipScope::AllFaces), 1u);
 }
 
+// A face of an off-surface mesher on the top (z = 0) of a convex 90 degree edge, 0.1 above it
+// and overhanging the wall (x = 0), rising 2.5 degrees towards the wall, as restoration beside
+// such an edge leaves it. Its centroid is nearest a wall sample (+x, 0.136 away; the face turns
+// 92.5 degrees against it), a top sample (+z) 0.146 away. Judged against the samples within
+// the nearest distance plus the face's own offset from the surface (0.166), it is not flipped;
+// were its vertices only 0.008 off their surface points, it would be.
+TEST(Validity, FlippedFacesBesideAnEdgeWithinTheMeshersOffset) {
+    const Mesh input{{Vec3(-0.1, 0, 0.1), Vec3(0.125, -0.5, 0.11), Vec3(0.125, 0.5, 0.11)},
+                     {{0, 1, 2}}};
+    const Oracle oracle{{Vec3::UnitZ(), Vec3::UnitZ(), Vec3::UnitZ()},
+                        {0, 0, 0},
+                        {Vec3(-0.1, 0, 0), Vec3(0, -0.5, 0), Vec3(0, 0.5, 0)}};
+    const SurfaceSamples exact{{Vec3(0, 0, -0.02), Vec3(-0.05, 0, 0)},
+                               {Vec3::UnitX(), Vec3::UnitZ()}};
+    EXPECT_EQ(count_flipped_faces(input, input, oracle, exact, FlipScope::AllFaces), 0u);
+    Oracle barely_off = oracle;  // 0.008 off: judged at the centroid, with almost no tie
+    for (Index v = 0; v < 3; ++v) {
+        barely_off.surface_points[v] = input.positions[v] - Vec3(0, 0, 0.008);
+    }
+    EXPECT_EQ(count_flipped_faces(input, input, barely_off, exact, FlipScope::AllFaces), 1u);
+    // Turned over, it turns against the top; with the wall's sample gone nothing excuses it.
+    const Mesh turned_over{input.positions, {{0, 2, 1}}};
+    const SurfaceSamples top{{Vec3(-0.05, 0, 0)}, {Vec3::UnitZ()}};
+    EXPECT_EQ(count_flipped_faces(input, turned_over, oracle, top, FlipScope::AllFaces), 1u);
+}
+
 }  // namespace
 }  // namespace resharp::eval

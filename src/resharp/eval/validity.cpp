@@ -53,6 +53,25 @@ Triangle sorted(Triangle t) {
     return t;
 }
 
+/// Whether unit normal n turns more than 90 degrees against the exact normal of every sample
+/// no farther from q than the nearest one plus `tie`. A face whose mesher put its vertices up to
+/// `tie` off the surface may lie that much nearer one face of an edge than the other; it is
+/// turned only if it turns against both.
+bool turned_against_every_near_sample(const SurfaceSamples& exact, const detail::UniformGrid& grid,
+                                      const Vec3& q, const Vec3& n, double tie) {
+    constexpr double kRightAngleMargin = 1e-6;  // a face in a plane of a right-angled edge
+    const auto distance = [&](Index i) { return (exact.points[i] - q).norm(); };
+    const auto [nearest, d] = grid.nearest(q, distance);
+    if (n.dot(exact.normals[nearest]) >= -kRightAngleMargin) return false;
+    const double reach = d + tie;
+    bool turned = true;
+    grid.for_each_near(q, reach, [&](Index i) {  // Bound: the samples in the cells within reach
+        if (turned && distance(i) <= reach && n.dot(exact.normals[i]) >= -kRightAngleMargin) {
+            turned = false;
+        }
+    });
+    return turned;
+}
 }  // namespace
 
 MeshValidity check_validity(const Mesh& mesh) {
@@ -93,12 +112,14 @@ std::vector<std::uint8_t> flipped_faces(const Mesh& input, const Mesh& output, c
     // edge can be the other face's: a face lying on one face of a 90 degree edge would meet it
     // at a dot product of 0 (docs/robustness.md). A face with a vertex farther than
     // kOffSurface mean edge lengths from its surface point (a midpoint or surface-nets vertex,
-    // not a bisection one, h/512 off) is judged where it lies.
+    // not a bisection one, h/512 off) is judged where it lies, against the samples about as
+    // near its centroid as the nearest (within its vertices' largest offset).
     constexpr double kOffSurface = 0.01;
     const double off_distance = kOffSurface * mean_edge_length(input);
-    const auto off_surface = [&](Index v) {
-        return !oracle.surface_points.empty() &&
-               (input.positions[v] - oracle.surface_points[v]).norm() > off_distance;
+    const auto offset = [&](Index v) {
+        return oracle.surface_points.empty()
+                   ? 0.0
+                   : (input.positions[v] - oracle.surface_points[v]).norm();
     };
     std::vector<std::uint8_t> flipped(output.face_count(), 0);
     for (Index f = 0; f < output.face_count(); ++f) {
@@ -108,20 +129,17 @@ std::vector<std::uint8_t> flipped_faces(const Mesh& input, const Mesh& output, c
                    &c = output.positions[t[2]];
         const Vec3 n = (b - a).cross(c - a);
         if (n.squaredNorm() == 0.0) continue;
-        bool is_flipped = false, has_input_vertex = false, has_off_vertex = false;
+        bool is_flipped = false, has_input_vertex = false;
+        double face_offset = 0.0;  // the farthest its mesher put one of its vertices off
         for (Index v : t) {
             if (v >= first_new) continue;
             has_input_vertex = true;
-            has_off_vertex = has_off_vertex || off_surface(v);
+            face_offset = std::max(face_offset, offset(v));
             is_flipped = is_flipped || n.dot(oracle.normals[v]) <= 0.0;
         }
-        if ((!has_input_vertex || has_off_vertex) && exact.size() > 0) {
-            const Vec3 centroid = (a + b + c) / 3.0;
-            const Index s =
-                exact_grid
-                    .nearest(centroid, [&](Index i) { return (exact.points[i] - centroid).norm(); })
-                    .first;
-            is_flipped = n.dot(exact.normals[s]) <= 0.0;
+        if ((!has_input_vertex || face_offset > off_distance) && exact.size() > 0) {
+            is_flipped = turned_against_every_near_sample(exact, exact_grid, (a + b + c) / 3.0,
+                                                          n.normalized(), face_offset);
         }
         flipped[f] = is_flipped;
     }
