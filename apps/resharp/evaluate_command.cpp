@@ -381,6 +381,8 @@ void run_evaluate(EvaluateArguments args) {
     for (std::size_t o = 0; o < eval::kOriginCount; ++o)
         j["flipped_by_origin"][std::string(eval::origin_name(eval::Origin(o)))] = by_origin[o];
     j["moved_input_vertices"] = moved;
+    const std::vector<std::uint8_t> turned = eval::turned_against_input(input, output);
+    j["turned_against_input"] = std::count(turned.begin(), turned.end(), 1);
     j["flipped_triangles_input"] = std::count(flipped_in_input.begin(), flipped_in_input.end(), 1);
     j["self_intersections"] = valid_out.self_intersections;
     j["self_intersections_input"] = valid_in.self_intersections;

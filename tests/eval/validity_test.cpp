@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "resharp/core/errors.h"
 
 namespace resharp::eval {
@@ -104,6 +106,30 @@ TEST(Validity, FlippedFacesBesideAnEdgeWithinTheMeshersOffset) {
     const Mesh turned_over{input.positions, {{0, 2, 1}}};
     const SurfaceSamples top{{Vec3(-0.05, 0, 0)}, {Vec3::UnitZ()}};
     EXPECT_EQ(count_flipped_faces(input, turned_over, oracle, top, FlipScope::AllFaces), 1u);
+}
+
+// A unit square on z = 0 (+z) as input. Pieces of one of its faces around a new vertex are not
+// turned against it, one of them reversed is; so is a face whose corners are an input face's
+// but one of which moved across the others. Faces left as they were are not judged.
+TEST(Validity, TurnedAgainstInput) {
+    const Mesh input{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)},
+                     {{0, 1, 2}, {0, 2, 3}}};
+    const auto count = [&](const Mesh& output) {
+        const std::vector<std::uint8_t> turned = turned_against_input(input, output);
+        EXPECT_EQ(turned.size(), output.face_count());
+        return std::count(turned.begin(), turned.end(), 1);
+    };
+    EXPECT_EQ(count(input), 0);
+    Mesh split = input;
+    split.positions.push_back(Vec3(0.7, 0.3, 0));
+    split.triangles = {{0, 1, 4}, {1, 2, 4}, {2, 0, 4}, {0, 2, 3}};
+    EXPECT_EQ(count(split), 0);
+    split.triangles[0] = {0, 4, 1};
+    EXPECT_EQ(count(split), 1);
+    Mesh moved = input;
+    moved.positions[1] = Vec3(0.2, 0.9, 0);
+    EXPECT_EQ(count(moved), 1);
+    EXPECT_THROW(turned_against_input(input, Mesh{{Vec3(0, 0, 0)}, {}}), InvalidInput);
 }
 
 }  // namespace

@@ -10,9 +10,14 @@
 #include "resharp/eval/self_intersections.h"
 #include "resharp/eval/uniform_grid.h"
 #include "resharp/mesh/diagnostics.h"
+#include "resharp/mesh/geometry.h"
 
 namespace resharp::eval {
 namespace {
+
+/// Turned more than 90 degrees means a dot product of unit normals below minus this: a face in
+/// one plane of a right-angled edge is not turned against the other plane, whatever the rounding.
+constexpr double kRightAngleMargin = 1e-6;
 
 double smallest_angle_deg(const Mesh& mesh) {
     double smallest = 180.0;
@@ -59,7 +64,6 @@ Triangle sorted(Triangle t) {
 /// turned only if it turns against both.
 bool turned_against_every_near_sample(const SurfaceSamples& exact, const detail::UniformGrid& grid,
                                       const Vec3& q, const Vec3& n, double tie) {
-    constexpr double kRightAngleMargin = 1e-6;  // a face in a plane of a right-angled edge
     const auto distance = [&](Index i) { return (exact.points[i] - q).norm(); };
     const auto [nearest, d] = grid.nearest(q, distance);
     if (n.dot(exact.normals[nearest]) >= -kRightAngleMargin) return false;
@@ -67,6 +71,38 @@ bool turned_against_every_near_sample(const SurfaceSamples& exact, const detail:
     bool turned = true;
     grid.for_each_near(q, reach, [&](Index i) {  // Bound: the samples in the cells within reach
         if (turned && distance(i) <= reach && n.dot(exact.normals[i]) >= -kRightAngleMargin) {
+            turned = false;
+        }
+    });
+    return turned;
+}
+
+/// The faces of `mesh` in a grid, for nearest-face queries.
+detail::UniformGrid face_grid(const Mesh& mesh) {
+    return detail::UniformGrid(
+        mesh.face_count(),
+        [&](std::size_t f) {
+            const Triangle& t = mesh.triangles[f];
+            detail::Box3 box(mesh.positions[t[0]], mesh.positions[t[0]]);
+            return box.extend(mesh.positions[t[1]]).extend(mesh.positions[t[2]]);
+        },
+        mean_edge_length(mesh));
+}
+
+/// Whether unit normal n turns more than 90 degrees against every face of `mesh` nearest q
+/// (within `tie` of the nearest distance).
+bool turned_against_nearest_faces(const Mesh& mesh, const std::vector<Vec3>& face_normals,
+                                  const detail::UniformGrid& grid, const Vec3& q, const Vec3& n,
+                                  double tie) {
+    const auto distance = [&](Index f) {
+        const Triangle& t = mesh.triangles[f];
+        return std::sqrt(squared_distance_to_triangle(q, mesh.positions[t[0]], mesh.positions[t[1]],
+                                                      mesh.positions[t[2]]));
+    };
+    const double reach = grid.nearest(q, distance).second + tie;
+    bool turned = true;
+    grid.for_each_near(q, reach, [&](Index f) {  // Bound: the faces filed in the cells within reach
+        if (turned && distance(f) <= reach && n.dot(face_normals[f]) >= -kRightAngleMargin) {
             turned = false;
         }
     });
@@ -144,6 +180,42 @@ std::vector<std::uint8_t> flipped_faces(const Mesh& input, const Mesh& output, c
         flipped[f] = is_flipped;
     }
     return flipped;
+}
+
+std::vector<std::uint8_t> turned_against_input(const Mesh& input, const Mesh& output) {
+    if (output.vertex_count() < input.vertex_count()) {
+        throw InvalidInput(
+            "the output has fewer vertices than the input: output vertex i must be "
+            "input vertex i, moved or not");
+    }
+    std::unordered_set<Triangle, FaceKey> input_faces;
+    for (const Triangle& t : input.triangles) input_faces.insert(sorted(t));
+    std::vector<Vec3> input_normals(input.face_count());
+    for (Index f = 0; f < input.face_count(); ++f) {
+        const Triangle& t = input.triangles[f];
+        const Vec3 &a = input.positions[t[0]], &b = input.positions[t[1]],
+                   &c = input.positions[t[2]];
+        input_normals[f] = (b - a).cross(c - a).normalized();  // zero for a degenerate face
+    }
+    const detail::UniformGrid grid = face_grid(input);
+    const double tie = 1e-9 * mean_edge_length(input);  // rounding, at any scale
+    const auto moved = [&](Index v) {
+        return v >= input.vertex_count() || output.positions[v] != input.positions[v];
+    };
+    std::vector<std::uint8_t> turned(output.face_count(), 0);
+    for (Index f = 0; f < output.face_count(); ++f) {  // Bound: the output's faces
+        const Triangle& t = output.triangles[f];
+        if (input_faces.count(sorted(t)) && !moved(t[0]) && !moved(t[1]) && !moved(t[2])) continue;
+        const Vec3 &a = output.positions[t[0]], &b = output.positions[t[1]],
+                   &c = output.positions[t[2]];
+        const Vec3 n = (b - a).cross(c - a).normalized();
+        const auto turned_at = [&](const Vec3& q) {
+            return turned_against_nearest_faces(input, input_normals, grid, q, n, tie);
+        };
+        turned[f] = n.isZero(0.0) || turned_at((a + b + c) / 3.0) || turned_at(a) || turned_at(b) ||
+                    turned_at(c);
+    }
+    return turned;
 }
 
 }  // namespace resharp::eval

@@ -54,4 +54,14 @@ std::size_t count_flipped_faces(const Mesh& input, const Mesh& output, const Ora
 std::vector<std::uint8_t> flipped_faces(const Mesh& input, const Mesh& output, const Oracle& oracle,
                                         const SurfaceSamples& exact, FlipScope scope);
 
+/// Output faces turned against the input surface they replace (issue 11's first harm test, here
+/// measured apart from restore()'s own harm check and without its two-ring search): a face not
+/// among the input's, or with a vertex moved, whose normal turns more than 90 degrees against
+/// every input face nearest one of its query points (its centroid and its three vertices; faces
+/// within a rounding tie of the nearest all count as nearest, so at an input vertex they are the
+/// faces around it). Degenerate faces count. Output vertex i < #V in is input vertex i, moved or
+/// not. Per output face (#F out): 1 where turned.
+/// \throws InvalidInput if the output has fewer vertices than the input.
+std::vector<std::uint8_t> turned_against_input(const Mesh& input, const Mesh& output);
+
 }  // namespace resharp::eval

@@ -332,8 +332,8 @@ namespace {
 
 /// Invariant of the placement: edge points only on crossing edges, the same point on both
 /// half-edges; every slot names an existing point.
-bool slots_follow_bands(const Connectivity& c, const BandClassification& bands,
-                        const SharpPoints& p) {
+[[maybe_unused]] bool slots_follow_bands(const Connectivity& c, const BandClassification& bands,
+                                         const SharpPoints& p) {
     for (Index h = 0; h < p.slots.edge_point.size(); ++h) {
         const Index id = p.slots.edge_point[h];
         if (id == kNoIndex) continue;
