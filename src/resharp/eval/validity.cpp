@@ -58,19 +58,17 @@ Triangle sorted(Triangle t) {
     return t;
 }
 
-/// Whether unit normal n turns more than 90 degrees against the exact normal of every sample
-/// no farther from q than the nearest one plus `tie`. A face whose mesher put its vertices up to
-/// `tie` off the surface may lie that much nearer one face of an edge than the other; it is
-/// turned only if it turns against both.
-bool turned_against_every_near_sample(const SurfaceSamples& exact, const detail::UniformGrid& grid,
-                                      const Vec3& q, const Vec3& n, double tie) {
-    const auto distance = [&](Index i) { return (exact.points[i] - q).norm(); };
+/// Whether unit normal n turns more than 90 degrees against normal_of(i) for every item i of
+/// `grid` no farther from q than the nearest one plus `tie`; false for an empty grid.
+template <class Distance, class Normal>
+bool turned_against_every_nearest(const detail::UniformGrid& grid, const Vec3& q, const Vec3& n,
+                                  double tie, Distance&& distance, Normal&& normal_of) {
     const auto [nearest, d] = grid.nearest(q, distance);
-    if (n.dot(exact.normals[nearest]) >= -kRightAngleMargin) return false;
+    if (nearest == kNoIndex) return false;
     const double reach = d + tie;
     bool turned = true;
-    grid.for_each_near(q, reach, [&](Index i) {  // Bound: the samples in the cells within reach
-        if (turned && distance(i) <= reach && n.dot(exact.normals[i]) >= -kRightAngleMargin) {
+    grid.for_each_near(q, reach, [&](Index i) {  // Bound: the items filed in the cells within reach
+        if (turned && distance(i) <= reach && n.dot(normal_of(i)) >= -kRightAngleMargin) {
             turned = false;
         }
     });
@@ -89,25 +87,6 @@ detail::UniformGrid face_grid(const Mesh& mesh) {
         mean_edge_length(mesh));
 }
 
-/// Whether unit normal n turns more than 90 degrees against every face of `mesh` nearest q
-/// (within `tie` of the nearest distance).
-bool turned_against_nearest_faces(const Mesh& mesh, const std::vector<Vec3>& face_normals,
-                                  const detail::UniformGrid& grid, const Vec3& q, const Vec3& n,
-                                  double tie) {
-    const auto distance = [&](Index f) {
-        const Triangle& t = mesh.triangles[f];
-        return std::sqrt(squared_distance_to_triangle(q, mesh.positions[t[0]], mesh.positions[t[1]],
-                                                      mesh.positions[t[2]]));
-    };
-    const double reach = grid.nearest(q, distance).second + tie;
-    bool turned = true;
-    grid.for_each_near(q, reach, [&](Index f) {  // Bound: the faces filed in the cells within reach
-        if (turned && distance(f) <= reach && n.dot(face_normals[f]) >= -kRightAngleMargin) {
-            turned = false;
-        }
-    });
-    return turned;
-}
 }  // namespace
 
 MeshValidity check_validity(const Mesh& mesh) {
@@ -174,8 +153,13 @@ std::vector<std::uint8_t> flipped_faces(const Mesh& input, const Mesh& output, c
             is_flipped = is_flipped || n.dot(oracle.normals[v]) <= 0.0;
         }
         if ((!has_input_vertex || face_offset > off_distance) && exact.size() > 0) {
-            is_flipped = turned_against_every_near_sample(exact, exact_grid, (a + b + c) / 3.0,
-                                                          n.normalized(), face_offset);
+            // A face whose mesher put its vertices up to face_offset off the surface may lie
+            // that much nearer one face of an edge than the other: turned only if against both.
+            const Vec3 q = (a + b + c) / 3.0;
+            is_flipped = turned_against_every_nearest(
+                exact_grid, q, n.normalized(), face_offset,
+                [&](Index i) { return (exact.points[i] - q).norm(); },
+                [&](Index i) { return exact.normals[i]; });
         }
         flipped[f] = is_flipped;
     }
@@ -210,7 +194,13 @@ std::vector<std::uint8_t> turned_against_input(const Mesh& input, const Mesh& ou
                    &c = output.positions[t[2]];
         const Vec3 n = (b - a).cross(c - a).normalized();
         const auto turned_at = [&](const Vec3& q) {
-            return turned_against_nearest_faces(input, input_normals, grid, q, n, tie);
+            const auto distance = [&](Index g) {
+                const Triangle& s = input.triangles[g];
+                return std::sqrt(squared_distance_to_triangle(
+                    q, input.positions[s[0]], input.positions[s[1]], input.positions[s[2]]));
+            };
+            return turned_against_every_nearest(grid, q, n, tie, distance,
+                                                [&](Index g) { return input_normals[g]; });
         };
         turned[f] = n.isZero(0.0) || turned_at((a + b + c) / 3.0) || turned_at(a) || turned_at(b) ||
                     turned_at(c);
