@@ -5,6 +5,9 @@
 #include <algorithm>
 
 #include "resharp/core/errors.h"
+#include "resharp/pipeline/restore.h"
+#include "support/grid_shapes.h"
+#include "support/harm_criteria.h"
 
 namespace resharp::eval {
 namespace {
@@ -130,6 +133,32 @@ TEST(Validity, TurnedAgainstInput) {
     moved.positions[1] = Vec3(0.2, 0.9, 0);
     EXPECT_EQ(count(moved), 1);
     EXPECT_THROW(turned_against_input(input, Mesh{{Vec3(0, 0, 0)}, {}}), InvalidInput);
+}
+
+// The grid search agrees with the tests' brute-force one (support/harm_criteria.h) on restored
+// plates, of an exact mesher and of one whose vertices restore() moves, with every fifth piece
+// turned over.
+TEST(Validity, TurnedAgainstInputAgreesWithTheBruteForceSearch) {
+    for (sim::Mesher mesher : {sim::Mesher::MarchingCubes, sim::Mesher::Midpoint}) {
+        SCOPED_TRACE(sim::to_string(mesher));
+        const test::SampledShape shape = test::sampled_drilled_plate(0.5, mesher);
+        RestoreResult r = restore(shape.mesh, RestoreOptions{});
+        const auto count = [&] {
+            const std::vector<std::uint8_t> turned = turned_against_input(shape.mesh, r.mesh);
+            return static_cast<std::size_t>(std::count(turned.begin(), turned.end(), 1));
+        };
+        EXPECT_EQ(count(), test::turned_against_nearest(shape.mesh, r.mesh, r.source_face));
+        std::size_t pieces = 0;
+        for (Index f = 0; f < r.mesh.face_count(); ++f) {
+            Triangle& t = r.mesh.triangles[f];
+            if (t != shape.mesh.triangles[r.source_face[f]] && pieces++ % 5 == 0) {
+                std::swap(t[1], t[2]);
+            }
+        }
+        ASSERT_GT(pieces, 100u);
+        EXPECT_GE(count(), pieces / 5);
+        EXPECT_EQ(count(), test::turned_against_nearest(shape.mesh, r.mesh, r.source_face));
+    }
 }
 
 }  // namespace

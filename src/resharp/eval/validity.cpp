@@ -182,7 +182,11 @@ std::vector<std::uint8_t> turned_against_input(const Mesh& input, const Mesh& ou
         input_normals[f] = (b - a).cross(c - a).normalized();  // zero for a degenerate face
     }
     const detail::UniformGrid grid = face_grid(input);
-    const double tie = 1e-9 * mean_edge_length(input);  // rounding, at any scale
+    // Distances within rounding of each other tie, relative to the part, so that a scaled or
+    // moved part ties the same faces (as tests/support/harm_criteria.h, which checks this).
+    Eigen::AlignedBox3d box;
+    for (const Vec3& p : input.positions) box.extend(p);
+    const double tie = 1e-10 * box.diagonal().norm();
     const auto moved = [&](Index v) {
         return v >= input.vertex_count() || output.positions[v] != input.positions[v];
     };
