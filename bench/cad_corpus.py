@@ -69,6 +69,7 @@ def measure(exe, solid, scratch, name, cells, simulate_flags=(), in_process=Fals
     return {"triangles_in": e["validity"]["input"]["triangles"],
             "flipped_by_origin": e.get("flipped_by_origin"),
             "cad": e["cad"], "flipped": e["flipped_triangles"],
+            "turned_against_input": e["turned_against_input"],
             "self_intersections": e["self_intersections"],
             "self_intersections_input": e["self_intersections_input"],
             "restoration_rate": e["restoration_rate"]}
