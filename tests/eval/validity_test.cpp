@@ -105,6 +105,11 @@ TEST(Validity, FlippedFacesBesideAnEdgeWithinTheMeshersOffset) {
         barely_off.surface_points[v] = input.positions[v] - Vec3(0, 0, 0.008);
     }
     EXPECT_EQ(count_flipped_faces(input, input, barely_off, exact, FlipScope::AllFaces), 1u);
+    // Unless the samples lie 0.01 apart: the surface point nearest it may be that far from the
+    // nearest sample, so the top's sample is as near.
+    SurfaceSamples spaced = exact;
+    spaced.spacing = 0.01;
+    EXPECT_EQ(count_flipped_faces(input, input, barely_off, spaced, FlipScope::AllFaces), 0u);
     // Turned over, it turns against the top; with the wall's sample gone nothing excuses it.
     const Mesh turned_over{input.positions, {{0, 2, 1}}};
     const SurfaceSamples top{{Vec3(-0.05, 0, 0)}, {Vec3::UnitZ()}};

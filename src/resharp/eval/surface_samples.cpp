@@ -7,6 +7,7 @@ namespace resharp::eval {
 
 SurfaceSamples sample_exact_surface(const sim::DexelGrid& grid) {
     SurfaceSamples s;
+    s.spacing = grid.spec.pitch;
     for (int axis = 0; axis < 3; ++axis) {
         const auto& rays = grid.rays[axis];
         for (std::size_t r = 0; r < rays.size(); ++r) {

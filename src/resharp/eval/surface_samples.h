@@ -15,6 +15,9 @@ namespace resharp::eval {
 struct SurfaceSamples {
     std::vector<Vec3> points;
     std::vector<Vec3> normals;
+    /// The pitch of the ray grid the samples lie on (0: not known): a surface point may lie
+    /// about that far from the sample nearest it.
+    double spacing = 0.0;
     std::size_t size() const { return points.size(); }
 };
 

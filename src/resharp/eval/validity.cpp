@@ -154,10 +154,12 @@ std::vector<std::uint8_t> flipped_faces(const Mesh& input, const Mesh& output, c
         }
         if ((!has_input_vertex || face_offset > off_distance) && exact.size() > 0) {
             // A face whose mesher put its vertices up to face_offset off the surface may lie
-            // that much nearer one face of an edge than the other: turned only if against both.
+            // that much nearer one face of an edge than the other, and the surface point
+            // nearest it lie up to the samples' spacing from the nearest sample: it is turned
+            // only if it turns against every sample within both of the nearest.
             const Vec3 q = (a + b + c) / 3.0;
             is_flipped = turned_against_every_nearest(
-                exact_grid, q, n.normalized(), face_offset,
+                exact_grid, q, n.normalized(), face_offset + exact.spacing,
                 [&](Index i) { return (exact.points[i] - q).norm(); },
                 [&](Index i) { return exact.normals[i]; });
         }

@@ -39,10 +39,11 @@ enum class FlipScope {
 /// oracle surface point (a midpoint or surface-nets vertex; bisection's, h/512 off, are not) is
 /// judged at its centroid too, since an off-surface vertex beside an edge carries the other
 /// face's normal; and there it is flipped only if it turns more than 90 degrees against every
-/// sample no farther than the nearest plus the largest such offset among its vertices: a mesh
-/// that far off the surface may lie that much nearer one face of an edge than the other, so a
-/// face on the top of a convex edge, overhanging its wall, is judged against the top as well
-/// as the wall. Degenerate faces
+/// sample no farther than the nearest plus the largest such offset among its vertices plus the
+/// samples' spacing: a mesh that far off the surface may lie that much nearer one face of an
+/// edge than the other, and the surface point nearest it lie about a spacing from the nearest
+/// sample, so a face on the top of a convex edge, overhanging its wall, is judged against the
+/// top as well as the wall. Degenerate faces
 /// are not counted. `output` starts with `input`'s vertices; pass input as output with
 /// AllFaces to count the input's own flipped slivers.
 /// \throws InvalidInput if the output does not start with the input's vertices or the oracle
