@@ -44,8 +44,10 @@ class Segmentation:
 class RestoreResult:
     """What restore() gives back. The arrays are resharp's own memory, handed over uncopied."""
 
-    #: (#V', 3) float64: the input vertices first, unchanged and in order (the welded ones with
-    #: weld=True), then the points inserted on sharp edges and corners.
+    #: (#V', 3) float64: the input vertices first and in order (the welded ones with
+    #: weld=True), then the points inserted on sharp edges and corners: row i < #V is input
+    #: vertex i. Input vertices keep their positions, except on a near-surface mesh
+    #: (report["vertices"]), where some move within their grid cell or along their grid edge.
     vertices: _np.ndarray
     #: (#F', 3) int32: the input faces in order, each unchanged or replaced in place by its
     #: pieces (exact duplicate faces removed unless keep_duplicate_faces=True).

@@ -47,9 +47,13 @@ struct Segmentation {
 };
 
 struct RestoreResult {
-    /// The restored mesh: the input vertices first, unchanged and in order, then the new points
-    /// on sharp edges and corners; faces in input order (less removed duplicates), each
-    /// unchanged or replaced in place by its pieces.
+    /// The restored mesh: the input vertices first and in order, then the new points on sharp
+    /// edges and corners, so output vertex i < #V in is input vertex i and the others come from
+    /// no input vertex; faces in input order (less removed duplicates), each unchanged or
+    /// replaced in place by its pieces. Input vertices keep their positions bit for bit, except
+    /// on a near-surface mesh (report.vertices: placement near or midpoint), where some move
+    /// within their grid cell or along their grid edge (report.vertices counts them and gives
+    /// the largest move).
     Mesh mesh;
     /// Per output face (#F out): the input face it is or was cut from, so that callers can
     /// carry face attributes (tool ids, colours) over.
@@ -61,7 +65,9 @@ struct RestoreResult {
 };
 
 /// Paper §3-§5: finds the chamfer bands a grid-based simulation leaves along sharp edges and
-/// corners and restores the sharp edges by inserting points on them. Input vertices never move.
+/// corners and restores the sharp edges by inserting points on them. Input vertices of an
+/// exact-crossing mesh never move; those of a near-surface mesh move only within what their
+/// mesher could have got wrong (VertexOptions, docs/method.md).
 /// Exact duplicate faces are removed first (MeshRepairOptions). Every output face that replaces
 /// an input face is checked against the input surface; what fails is undone (docs/method.md,
 /// "Do no harm"). Defects (boundaries, non-manifold edges, degenerate faces) are counted in the
