@@ -20,15 +20,18 @@ FacesInSweepOrder::FacesInSweepOrder(const Mesh& mesh, std::span<const Index> fa
     }
     std::vector<double> z(faces.size());
     for (std::size_t i = 0; i < faces.size(); ++i) z[i] = lowest_z(mesh, faces[i]);
-    const auto [low, high] = std::minmax_element(z.begin(), z.end());
+    // Plain values, not a structured binding: clang 14 (the fuzzing lane) refuses to capture
+    // one in the lambda below.
+    const auto bounds = std::minmax_element(z.begin(), z.end());
+    const double low = *bounds.first, high = *bounds.second;
     // About 8 faces a slab. The slab is a non-decreasing function of z (rounding keeps
     // subtraction and multiplication monotone), so sorting slab by slab sorts the whole.
     const std::size_t slabs = std::max<std::size_t>(1, faces.size() / 8);
-    const double range = *high - *low;  // +inf past the doubles: one slab then
+    const double range = high - low;  // +inf past the doubles: one slab then
     const double per_z =
         range > 0.0 && std::isfinite(range) ? static_cast<double>(slabs) / range : 0.0;
     auto slab_of = [&](double zi) {
-        return std::min(slabs - 1, static_cast<std::size_t>((zi - *low) * per_z));
+        return std::min(slabs - 1, static_cast<std::size_t>((zi - low) * per_z));
     };
     slab_start_.assign(slabs + 1, 0);
     for (double zi : z) ++slab_start_[slab_of(zi) + 1];
