@@ -31,15 +31,16 @@ public:
           output_(output),
           s_(s),
           reach_(reach),
-          faces_(
-              input.face_count(), [&](std::size_t f) { return box(Index(f)); }, reach) {}
+          faces_(detail::face_grid(input, reach)) {}
 
     /// The loss of a missed true piece at p, before asking whether an output crease is near.
     std::pair<CreaseLoss, MoveFate> judge(const Vec3& p) const {
         bool band = false, placed = false, harmed = false, inserted = false;
         bool planned = false, kept = false;
         faces_.for_each_near(p, reach_, [&](Index f) {
-            if (s_.face_role[f] == BandRole::None || box(f).exteriorDistance(p) > reach_) return;
+            if (s_.face_role[f] == BandRole::None ||
+                detail::face_box(input_, f).exteriorDistance(p) > reach_)
+                return;
             band = true;
             const PointFate fate = s_.point_fate[f];
             placed = placed || fate != PointFate::NotPlaced;
@@ -60,12 +61,6 @@ public:
     }
 
 private:
-    detail::Box3 box(Index f) const {
-        const Triangle& t = input_.triangles[f];
-        detail::Box3 b(input_.positions[t[0]], input_.positions[t[0]]);
-        return b.extend(input_.positions[t[1]]).extend(input_.positions[t[2]]);
-    }
-
     const Mesh& input_;
     const Mesh& output_;
     const Segmentation& s_;

@@ -10,11 +10,13 @@
 
 #include "resharp/core/errors.h"
 #include "resharp/eval/uniform_grid.h"
+#include "resharp/mesh/geometry.h"
 
 namespace resharp::eval {
 namespace {
 
 using detail::Box3;
+using detail::face_grid;
 using detail::UniformGrid;
 
 /// Closest point of triangle (a, b, c) to p (Ericson, Real-Time Collision Detection, 5.1.5).
@@ -57,20 +59,8 @@ void parallel_for_each(std::size_t n, Body&& body) {
 }
 
 OneWay samples_to_mesh(const SurfaceSamples& s, const Mesh& mesh, double cell) {
-    std::vector<Vec3> face_normal(mesh.face_count());
-    for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-        const Triangle& t = mesh.triangles[f];
-        const Vec3& a = mesh.positions[t[0]];
-        face_normal[f] = (mesh.positions[t[1]] - a).cross(mesh.positions[t[2]] - a).normalized();
-    }
-    const UniformGrid grid(
-        mesh.face_count(),
-        [&](std::size_t f) {
-            const Triangle& t = mesh.triangles[f];
-            Box3 b(mesh.positions[t[0]], mesh.positions[t[0]]);
-            return b.extend(mesh.positions[t[1]]).extend(mesh.positions[t[2]]);
-        },
-        cell);
+    const std::vector<Vec3> face_normal = face_normals(mesh);  // zero where degenerate
+    const UniformGrid grid = face_grid(mesh, cell);
     OneWay out{std::vector<double>(s.size()), std::vector<double>(s.size())};
     parallel_for_each(s.size(), [&](std::size_t i) {
         const Vec3& p = s.points[i];
@@ -82,8 +72,7 @@ OneWay samples_to_mesh(const SurfaceSamples& s, const Mesh& mesh, double cell) {
                 .norm();
         });
         out.distance[i] = d;
-        const double dot = std::abs(s.normals[i].dot(face_normal[f]));
-        out.abs_dot[i] = std::isfinite(dot) ? dot : 0.0;  // degenerate nearest face: no normal
+        out.abs_dot[i] = std::abs(s.normals[i].dot(face_normal[f]));  // 0: degenerate face
     });
     return out;
 }

@@ -58,4 +58,15 @@ double UniformGrid::distance_to_box_boundary(const Vec3& p, const Eigen::Vector3
     return std::max(d, 0.0);
 }
 
+Box3 face_box(const Mesh& mesh, Index f) {
+    const Triangle& t = mesh.triangles[f];
+    Box3 box(mesh.positions[t[0]], mesh.positions[t[0]]);
+    return box.extend(mesh.positions[t[1]]).extend(mesh.positions[t[2]]);
+}
+
+UniformGrid face_grid(const Mesh& mesh, double cell) {
+    return UniformGrid(
+        mesh.face_count(), [&](std::size_t f) { return face_box(mesh, Index(f)); }, cell);
+}
+
 }  // namespace resharp::eval::detail

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "resharp/core/types.h"
+#include "resharp/mesh/mesh.h"
 
 namespace resharp::eval::detail {
 
@@ -109,4 +110,10 @@ std::pair<Index, double> UniformGrid::nearest(const Vec3& p, Distance&& distance
         if (best.second <= distance_to_box_boundary(p, lo, hi)) return best;
     }
 }
+/// The bounding box of face f of `mesh`.
+Box3 face_box(const Mesh& mesh, Index f);
+
+/// The faces of `mesh` filed by their boxes, for nearest-face and radius queries.
+UniformGrid face_grid(const Mesh& mesh, double cell);
+
 }  // namespace resharp::eval::detail

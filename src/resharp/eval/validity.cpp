@@ -75,18 +75,6 @@ bool turned_against_every_nearest(const detail::UniformGrid& grid, const Vec3& q
     return turned;
 }
 
-/// The faces of `mesh` in a grid, for nearest-face queries.
-detail::UniformGrid face_grid(const Mesh& mesh) {
-    return detail::UniformGrid(
-        mesh.face_count(),
-        [&](std::size_t f) {
-            const Triangle& t = mesh.triangles[f];
-            detail::Box3 box(mesh.positions[t[0]], mesh.positions[t[0]]);
-            return box.extend(mesh.positions[t[1]]).extend(mesh.positions[t[2]]);
-        },
-        mean_edge_length(mesh));
-}
-
 }  // namespace
 
 MeshValidity check_validity(const Mesh& mesh) {
@@ -176,14 +164,8 @@ std::vector<std::uint8_t> turned_against_input(const Mesh& input, const Mesh& ou
     }
     std::unordered_set<Triangle, FaceKey> input_faces;
     for (const Triangle& t : input.triangles) input_faces.insert(sorted(t));
-    std::vector<Vec3> input_normals(input.face_count());
-    for (Index f = 0; f < input.face_count(); ++f) {
-        const Triangle& t = input.triangles[f];
-        const Vec3 &a = input.positions[t[0]], &b = input.positions[t[1]],
-                   &c = input.positions[t[2]];
-        input_normals[f] = (b - a).cross(c - a).normalized();  // zero for a degenerate face
-    }
-    const detail::UniformGrid grid = face_grid(input);
+    const std::vector<Vec3> input_normals = face_normals(input);  // zero where degenerate
+    const detail::UniformGrid grid = detail::face_grid(input, mean_edge_length(input));
     // Distances within rounding of each other tie, relative to the part, so that a scaled or
     // moved part ties the same faces (as tests/support/harm_criteria.h, which checks this).
     Eigen::AlignedBox3d box;
@@ -198,7 +180,7 @@ std::vector<std::uint8_t> turned_against_input(const Mesh& input, const Mesh& ou
         if (input_faces.count(sorted(t)) && !moved(t[0]) && !moved(t[1]) && !moved(t[2])) continue;
         const Vec3 &a = output.positions[t[0]], &b = output.positions[t[1]],
                    &c = output.positions[t[2]];
-        const Vec3 n = (b - a).cross(c - a).normalized();
+        const Vec3 n = triangle_normal(a, b, c);
         const auto turned_at = [&](const Vec3& q) {
             const auto distance = [&](Index g) {
                 const Triangle& s = input.triangles[g];
