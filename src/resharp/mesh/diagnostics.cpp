@@ -1,6 +1,11 @@
 #include "resharp/mesh/diagnostics.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_invoke.h>
+#include <tbb/parallel_reduce.h>
+
 #include <algorithm>
+#include <functional>
 
 #include "resharp/core/disjoint_sets.h"
 #include "resharp/mesh/duplicate_faces.h"
@@ -68,6 +73,50 @@ void join_face(const Mesh& mesh, const Connectivity& c, Index f, DisjointSets& s
     }
 }
 
+/// The connected components of the faces' vertices (isolated vertices not counted).
+std::size_t count_components(const Mesh& mesh, const Connectivity& c) {
+    DisjointSets sets(mesh.vertex_count());
+    for (Index f = 0; f < mesh.face_count(); ++f) join_face(mesh, c, f, sets);
+    std::size_t components = 0;
+    for (Index v = 0; v < mesh.vertex_count(); ++v) {
+        components += !c.faces_around(v).empty() && sets.find(v) == v;
+    }
+    return components;
+}
+
+/// Degenerate faces, isolated and non-manifold vertices, counted in parallel (integer sums:
+/// the same whatever the split).
+void count_faces_and_vertices(const Mesh& mesh, const Connectivity& c, MeshDiagnostics& d) {
+    using Range = tbb::blocked_range<Index>;
+    d.degenerate_faces = tbb::parallel_reduce(
+        Range(0, static_cast<Index>(mesh.face_count()), 4096), std::size_t{0},
+        [&](const Range& r, std::size_t n) {
+            for (Index f = r.begin(); f != r.end(); ++f) n += is_degenerate_face(mesh, f);
+            return n;
+        },
+        std::plus<>());
+    struct VertexCounts {
+        std::size_t isolated = 0, nonmanifold = 0;
+    };
+    const VertexCounts counts = tbb::parallel_reduce(
+        Range(0, static_cast<Index>(mesh.vertex_count()), 4096), VertexCounts{},
+        [&](const Range& r, VertexCounts n) {
+            for (Index v = r.begin(); v != r.end(); ++v) {
+                if (c.faces_around(v).empty()) {
+                    ++n.isolated;
+                } else {
+                    n.nonmanifold += is_nonmanifold_vertex(mesh, c, v);
+                }
+            }
+            return n;
+        },
+        [](VertexCounts a, const VertexCounts& b) {
+            return VertexCounts{a.isolated + b.isolated, a.nonmanifold + b.nonmanifold};
+        });
+    d.isolated_vertices = counts.isolated;
+    d.nonmanifold_vertices = counts.nonmanifold;
+}
+
 }  // namespace
 
 std::vector<bool> find_degenerate_faces(const Mesh& mesh) {
@@ -100,20 +149,9 @@ MeshDiagnostics diagnose(const Mesh& mesh, const Connectivity& c) {
     const DuplicateFaces duplicates = find_duplicate_faces(mesh, c);
     d.duplicate_faces = duplicates.removed + duplicates.opposite_pairs;
 
-    DisjointSets sets(mesh.vertex_count());
-    for (Index f = 0; f < mesh.face_count(); ++f) {
-        d.degenerate_faces += is_degenerate_face(mesh, f);
-        join_face(mesh, c, f, sets);
-    }
-    for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
-        const Index vi = static_cast<Index>(v);
-        if (c.faces_around(vi).empty()) {
-            ++d.isolated_vertices;
-            continue;
-        }
-        if (sets.find(vi) == vi) ++d.components;
-        if (is_nonmanifold_vertex(mesh, c, vi)) ++d.nonmanifold_vertices;
-    }
+    // The components (a union-find, serial) beside the per-face and per-vertex counts.
+    tbb::parallel_invoke([&] { d.components = count_components(mesh, c); },
+                         [&] { count_faces_and_vertices(mesh, c, d); });
     return d;
 }
 
