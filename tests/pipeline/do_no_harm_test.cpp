@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <random>
+#include <thread>
 
 #include "resharp/core/errors.h"
 #include "resharp/io/mesh_io.h"
@@ -133,6 +135,24 @@ TEST(DoNoHarm, ADeadlineOrACancellationGivesTheInputBack) {
     RestoreOptions patient;
     patient.stop.cancelled = [] { return false; };
     EXPECT_EQ(restore(shape.mesh, patient).mesh.triangles, restore(shape.mesh).mesh.triangles);
+}
+
+TEST(DoNoHarm, CancellationIsAskedFromTheCallingThreadOnly) {
+    // restore() runs the placement measurement beside the detection on a second thread; the
+    // callback must still be asked only where StopWhen promises.
+    const test::SampledShape shape = test::sampled_drilled_plate();
+    RestoreOptions options;
+    options.threads = 2;
+    const std::thread::id caller = std::this_thread::get_id();
+    std::atomic<int> asked = 0, asked_elsewhere = 0;
+    options.stop.cancelled = [&] {
+        ++asked;
+        if (std::this_thread::get_id() != caller) ++asked_elsewhere;
+        return false;
+    };
+    EXPECT_FALSE(restore(shape.mesh, options).report.output_unchanged);
+    EXPECT_GT(asked.load(), 0);
+    EXPECT_EQ(asked_elsewhere.load(), 0);
 }
 
 TEST(DoNoHarm, HarmThatOutlastsTheRoundsGivesTheInputBack) {
