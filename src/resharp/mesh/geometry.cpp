@@ -1,24 +1,15 @@
 #include "resharp/mesh/geometry.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "resharp/core/assert.h"
+#include "resharp/core/parallel.h"
 
 namespace resharp {
 
 namespace {
-
-/// Calls body(i) for every i below count, in parallel blocks of at least `grain`.
-template <class Body>
-void for_each_index(std::size_t count, std::size_t grain, Body&& body) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, grain), [&](const auto& range) {
-        for (std::size_t i = range.begin(); i != range.end(); ++i) body(i);
-    });
-}
 
 /// The normal of face f scaled by twice its area.
 Vec3 area_vector(const Mesh& mesh, std::size_t f) {

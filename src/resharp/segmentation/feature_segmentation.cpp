@@ -9,6 +9,7 @@
 
 #include "resharp/core/disjoint_sets.h"
 #include "resharp/core/errors.h"
+#include "resharp/core/parallel.h"
 #include "resharp/mesh/geometric_order.h"
 #include "resharp/mesh/geometry.h"
 
@@ -174,7 +175,9 @@ Index ring_patch_if_single(const Connectivity& c, const std::vector<Index>& face
 std::vector<Index> single_ring_patches(const Connectivity& c, const std::vector<Index>& face_patch,
                                        std::size_t vertex_count) {
     std::vector<Index> single(vertex_count);
-    for (Index v = 0; v < vertex_count; ++v) single[v] = ring_patch_if_single(c, face_patch, v);
+    for_each_index(vertex_count, 4096, [&](std::size_t v) {
+        single[v] = ring_patch_if_single(c, face_patch, static_cast<Index>(v));
+    });
     return single;
 }
 
@@ -183,14 +186,15 @@ std::vector<Index> single_ring_patches(const Connectivity& c, const std::vector<
 /// that of any of its faces; only the mixed rings are looked at again.
 std::vector<Index> carry_single_patches(const Connectivity& c, const std::vector<Index>& face_patch,
                                         std::vector<Index> before) {
-    for (Index v = 0; v < before.size(); ++v) {
+    for_each_index(before.size(), 4096, [&](std::size_t i) {
+        const Index v = static_cast<Index>(i);
         Index& single = before[v];
         if (single == kMixedRing) {
             single = ring_patch_if_single(c, face_patch, v);
         } else if (single != kNoIndex) {
             single = face_patch[c.faces_around(v)[0]];
         }
-    }
+    });
     return before;
 }
 
@@ -570,25 +574,28 @@ std::vector<Index> refine_border_labels(const Mesh& mesh, const Connectivity& c,
                                         const std::vector<Index>& single,
                                         const std::vector<Index>& label) {
     std::vector<Index> refined = label;
-    std::vector<Index> candidates;
-    for (Index v = 0; v < mesh.vertex_count(); ++v) {
-        if (single[v] != kMixedRing && single[v] != kNoIndex) continue;  // inside one patch
-        candidate_patches(mesh, c, face_patch, label, v, candidates);
-        if (candidates.size() < 2 && label[v] != kNoIndex) continue;  // nothing to decide
-        double best = std::numeric_limits<double>::infinity();
-        Index best_patch = label[v];
-        for (Index p : candidates) {
-            const double e = elevation_from_patch(mesh, c, normals, face_patch, label, v, p);
-            const bool tie = e == best || std::abs(e - best) <= kElevationTie;
-            if (e < best - kElevationTie || (tie && p == label[v])) {
-                best = e;
-                best_patch = p;
+    // Each vertex reads the labels of the vote and writes only its own refined label.
+    for_each_index_with<std::vector<Index>>(
+        mesh.vertex_count(), 4096, [&](std::size_t i, std::vector<Index>& candidates) {
+            const Index v = static_cast<Index>(i);
+            if (single[v] != kMixedRing && single[v] != kNoIndex) return;  // inside one patch
+            candidate_patches(mesh, c, face_patch, label, v, candidates);
+            if (candidates.size() < 2 && label[v] != kNoIndex) return;  // nothing to decide
+            double best = std::numeric_limits<double>::infinity();
+            Index best_patch = label[v];
+            for (Index p : candidates) {
+                const double e = elevation_from_patch(mesh, c, normals, face_patch, label, v, p);
+                const bool tie = e == best || std::abs(e - best) <= kElevationTie;
+                if (e < best - kElevationTie || (tie && p == label[v])) {
+                    best = e;
+                    best_patch = p;
+                }
             }
-        }
-        const bool decided = label[v] != kNoIndex ? best < std::numeric_limits<double>::infinity()
-                                                  : best < kOnPlaneSine;
-        if (decided) refined[v] = best_patch;
-    }
+            const bool decided = label[v] != kNoIndex
+                                     ? best < std::numeric_limits<double>::infinity()
+                                     : best < kOnPlaneSine;
+            if (decided) refined[v] = best_patch;
+        });
     return refined;
 }
 
