@@ -61,7 +61,7 @@ OTHER_VALUES = {
     "placement": ("tangent-planes", BRACKET),
     "spike_angle": (75.0, BRACKET),
     "thin_angle": (60.0, RELIEF),
-    "fold_angle": (120.0, BRACKET),
+    "fold_angle": (100.0, BRACKET),
     "no_crossing_check": (True, RELIEF),
     "harm_rounds": (1, RELIEF),
     "keep_duplicate_faces": (True, RELIEF),

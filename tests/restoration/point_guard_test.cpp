@@ -2,11 +2,16 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <numeric>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "resharp/core/errors.h"
+#include "resharp/mesh/diagnostics.h"
 #include "resharp/pipeline/restore.h"
+#include "resharp/restoration/split.h"
 #include "strip.h"
 #include "support/grid_shapes.h"
 
@@ -53,6 +58,97 @@ TEST(Guard, RefusesAPieceTurnedAgainstTheFaceItReplaces) {
     EXPECT_EQ(g.report.refused_by_guard, 1u);
     EXPECT_EQ(g.report.refused_by_quality, 0u);
     EXPECT_FALSE(g.accepted.has_points(0));
+}
+
+/// A corner triangle (face 0: vertices 0, 1, 2) and the faces across its edges 0, 1, 2 (faces
+/// 1, 2, 3, whose third vertices are 3, 4, 5), with exact feature normals, as cut from mech.stl
+/// (one grid pitch a unit): every edge whose ends' normals differ crosses. Its points are placed
+/// by eq. 5.2-5.3, and on the crossing edges of the mesh's border, which eq. 5.2 leaves alone,
+/// by `border_points` (half-edge and point, as on mech.stl): the sharp edges go on there.
+struct CornerWithNeighbours {
+    test::Strip s;
+    SharpPoints points;
+
+    CornerWithNeighbours(const std::array<Vec3, 6>& positions, const std::array<Vec3, 6>& normals,
+                         const std::vector<std::pair<Index, Vec3>>& border_points) {
+        s.mesh.positions.assign(positions.begin(), positions.end());
+        s.mesh.triangles = {{0, 1, 2}, {1, 0, 3}, {2, 1, 4}, {0, 2, 5}};
+        s.rebuild();
+        s.feature_normals.normal.assign(normals.begin(), normals.end());
+        BandClassification bands;
+        bands.face_role = {BandRole::Corner, BandRole::Edge, BandRole::Edge, BandRole::Edge};
+        for (Index h = 0; h < 3 * s.mesh.face_count(); ++h) {
+            const Index u = tail_vertex(s.mesh, h), v = head_vertex(s.mesh, h);
+            bands.is_crossing.push_back(normals[u] != normals[v]);
+        }
+        points =
+            place_sharp_points(s.mesh, s.connectivity, s.normals.face, bands, s.feature_normals);
+        for (const auto& [h, x] : border_points) {
+            EXPECT_TRUE(bands.is_crossing[h] && s.connectivity.twin[h] == kNoIndex);
+            points.slots.edge_point[h] = static_cast<Index>(points.points.size());
+            points.points.push_back(x);
+        }
+    }
+    Index corner() const { return points.slots.corner_point[0]; }
+    Index edge(Index k) const { return points.slots.edge_point[k]; }  ///< face 0's edge k
+    Index twin(Index k) const { return s.connectivity.twin[k]; }
+};
+
+// Where a sharp edge ends at a corner, eq. 5.2's mid-plane can put the edge's point past the
+// corner point, on the edge's extension: here the vertical edge runs up from the corner
+// (-0.414, 0, 0.586) to its next point at z = 1, and the point of edge 1 lies below the corner,
+// at z = 0.5; the pieces of face 0 between them fold. The corner point is kept and edge 1 split
+// at it rather than the corner point dropped (the guard used to drop it, the first single point
+// whose loss mends the face), which would leave the corner without a point and keep a point
+// that restores nothing of its edge.
+TEST(Guard, SplitsAnEdgeAtTheCornerPointRatherThanDropIt) {
+    const Vec3 up(0, 0, 1), front(0, -1, 0), left(-1, 0, 0);
+    const CornerWithNeighbours c(
+        {Vec3(-1, 0.414, 0.586), Vec3(0, 0, 0), Vec3(-0.414, 0.414, 1), Vec3(-1, 0, 0),
+         Vec3(0, 0, 1), Vec3(-1, 1.414, 0.586)},
+        {up, front, left, front, front, up},
+        {{4, Vec3(-1, 0, 0.586)}, {8, Vec3(-0.414, 0, 1)}, {10, Vec3(-0.414, 0.914, 0.586)}});
+    ASSERT_EQ(c.points.corner_points, 1u);
+    ASSERT_NE(c.corner(), kNoIndex);
+    EXPECT_TRUE(c.points.points[c.corner()].isApprox(Vec3(-0.414, 0, 0.586), 1e-12));
+    EXPECT_TRUE(c.points.points[c.edge(1)].isApprox(Vec3(-0.414, 0, 0.5), 1e-12));
+    const GuardedPoints g = guard(c.s, c.points);
+    EXPECT_EQ(g.accepted.corner_point[0], c.corner());
+    EXPECT_EQ(g.accepted.edge_point[1], c.corner());
+    EXPECT_EQ(g.accepted.edge_point[c.twin(1)], c.corner());
+    EXPECT_EQ(g.accepted.edge_point[0], c.edge(0));
+    EXPECT_EQ(g.accepted.edge_point[2], c.edge(2));
+    EXPECT_EQ(g.report.refused_by_quality + g.report.refused_by_guard, 0u);
+}
+
+// The two edges' points of face 0 both past the corner point (0.586, 0, -0.414): the vertical
+// edge 1's below it, edge 2's beside it. No single edge split at the corner point mends the
+// face, and the guard used to drop all four of its points. Splitting both edges at it keeps the
+// corner point, and the split mesh is oriented and manifold: vertex 2 is joined to the corner
+// point by faces 2 and 3 alone.
+TEST(Guard, SplitsTwoEdgesAtTheCornerPointWhereOneIsNotEnough) {
+    const Vec3 up(0, 0, 1), back(0, 1, 0), right(1, 0, 0);
+    const CornerWithNeighbours c(
+        {Vec3(0, 0.414, -0.414), Vec3(0, 0, 0), Vec3(0.586, -0.586, -1), Vec3(-1, 0, 0),
+         Vec3(0.586, -0.586, 0), Vec3(0.586, 0.414, -1)},
+        {up, back, right, back, right, right},
+        {{4, Vec3(-0.5, 0, -0.414)}, {7, Vec3(0.586, 0, 0)}, {11, Vec3(0.586, 0.414, -0.414)}});
+    ASSERT_NE(c.corner(), kNoIndex);
+    EXPECT_TRUE(c.points.points[c.corner()].isApprox(Vec3(0.586, 0, -0.414), 1e-12));
+    const GuardedPoints g = guard(c.s, c.points);
+    EXPECT_EQ(g.accepted.corner_point[0], c.corner());
+    EXPECT_EQ(g.accepted.edge_point[0], c.edge(0));
+    EXPECT_EQ(g.accepted.edge_point[1], c.corner());
+    EXPECT_EQ(g.accepted.edge_point[c.twin(1)], c.corner());
+    EXPECT_EQ(g.accepted.edge_point[2], c.corner());
+    EXPECT_EQ(g.accepted.edge_point[c.twin(2)], c.corner());
+    EXPECT_EQ(g.report.refused_by_quality + g.report.refused_by_guard, 0u);
+    const SplitMesh split = split_faces(c.s.mesh, c.points.points, g.accepted);
+    const MeshDiagnostics d = diagnose(split.mesh, build_connectivity(split.mesh));
+    EXPECT_EQ(d.nonmanifold_edges, 0u);
+    EXPECT_EQ(d.inconsistent_edges, 0u);
+    EXPECT_EQ(d.degenerate_faces, 0u);
+    EXPECT_EQ(d.nonmanifold_vertices, 0u);
 }
 
 TEST(Guard, WithdrawnPointsAreNotAccepted) {

@@ -173,35 +173,33 @@ private:
 /// the start, plus as many as edges holding one.
 class Repairs {
 public:
-    Repairs(const Connectivity& c, PointSlots slots, const PieceJudge& judge)
-        : c_(c), slots_(std::move(slots)), judge_(judge), snapped_(c.twin.size(), 0) {}
+    Repairs(const Connectivity& c, PointSlots slots, const PieceVertices& ids,
+            const PieceJudge& judge)
+        : c_(c), slots_(std::move(slots)), ids_(ids), judge_(judge), snapped_(c.twin.size(), 0) {}
 
     const PointSlots& slots() const { return slots_; }
     Fault fault_of(Index f) const { return judge_.fault_of(slots_, f); }
 
     /// Makes face f split soundly by changing as little as possible, in this order:
-    /// - drop a single point (the first that is enough, in slot order): two close points out
-    ///   of order along the sharp edge make a flipped sliver, and the one kept still restores
-    ///   the edge;
-    /// - in a corner triangle, split one edge at the corner point instead of its own point:
-    ///   where a sharp edge ends at a corner, eq. 5.2 can put the point beyond the corner on
-    ///   the edge's extension, and the corner is where that edge really stops;
+    /// - drop a single edge point (the first that is enough, in slot order): two close points
+    ///   out of order along the sharp edge make a flipped sliver, and the one kept still
+    ///   restores the edge;
+    /// - in a corner triangle, split one edge, then two, at the corner point instead of their
+    ///   own points where those lie beyond the corner (beyond_corner()): where a sharp edge ends
+    ///   at a corner, eq. 5.2's mid-plane can put its point past the corner, on the edge's
+    ///   extension, and the corner is where that edge really stops. Its point there restores
+    ///   nothing of the edge, the corner point the corner;
+    /// - drop the corner point alone;
+    /// - split one edge, then two, at the corner point, whatever their points;
     /// - drop every point of the face.
     /// Returns the number of points dropped.
     std::size_t repair(Index f) {
-        for (int i = 0; i < 4; ++i) {
+        for (int i = 0; i < 3; ++i) {
             if (*slot(f, i) != kNoIndex && try_replacing(f, i, kNoIndex)) return 1;
         }
-        const Index corner = slots_.corner_point[f];
-        const bool has_snapped_edge =
-            *slot(f, 0) == corner || *slot(f, 1) == corner || *slot(f, 2) == corner;
-        for (int i = 0; i < 3 && corner != kNoIndex && !has_snapped_edge; ++i) {
-            if (*slot(f, i) == kNoIndex || snapped_[3 * f + static_cast<Index>(i)]) continue;
-            if (try_replacing(f, i, corner)) {
-                mark_snapped(f, i);
-                return 0;
-            }
-        }
+        if (try_snapping(f, true)) return 0;
+        if (*slot(f, 3) != kNoIndex && try_replacing(f, 3, kNoIndex)) return 1;
+        if (try_snapping(f, false)) return 0;
         std::size_t dropped = 0;
         for (int i = 0; i < 4; ++i) {
             if (*slot(f, i) == kNoIndex) continue;
@@ -238,8 +236,67 @@ private:
         return sound;
     }
 
+    /// Splits the edges of face f in `edges` (a bit per edge slot) at f's corner point instead of
+    /// their own points if the face then splits without fault. Two snapped edges leave the
+    /// corner between them joined to the corner point by the faces across them alone.
+    bool snap_if_sound(Index f, unsigned edges) {
+        const Index corner = slots_.corner_point[f];
+        std::array<Index, 3> kept{};
+        for (int i = 0; i < 3; ++i) {
+            kept[static_cast<std::size_t>(i)] = *slot(f, i);
+            if (edges & (1u << i)) *slot(f, i) = corner;
+        }
+        const bool sound = fault_of(f) == Fault::None;
+        for (int i = 0; i < 3; ++i) *slot(f, i) = kept[static_cast<std::size_t>(i)];
+        if (!sound) return false;
+        for (int i = 0; i < 3; ++i) {
+            if (!(edges & (1u << i))) continue;
+            set(f, i, corner);
+            mark_snapped(f, i);
+        }
+        return true;
+    }
+
+    /// The point of edge i of face f lies beyond f's corner point: the corner point lies
+    /// between it and the next point of its sharp edge, the one other edge point of the face
+    /// across.
+    bool beyond_corner(Index f, int i) const {
+        const Index h = 3 * f + static_cast<Index>(i);
+        const Index point = slots_.edge_point[h], twin = c_.twin[h];
+        if (twin == kNoIndex) return false;
+        Index next = kNoIndex;
+        for (Index k = 3 * face_of(twin); k < 3 * face_of(twin) + 3; ++k) {
+            const Index p = slots_.edge_point[k];
+            if (k == twin || p == kNoIndex) continue;
+            if (next != kNoIndex) return false;
+            next = p;
+        }
+        if (next == kNoIndex) return false;
+        const Vec3& corner = ids_.position(ids_.of_point(slots_.corner_point[f]));
+        return (ids_.position(ids_.of_point(point)) - corner)
+                   .dot(ids_.position(ids_.of_point(next)) - corner) < 0.0;
+    }
+
+    /// The snapping steps of repair(): one edge, then two, among the edges of face f that hold
+    /// a point (beyond the corner if `beyond_only`) and were never snapped, the first set that is
+    /// enough in slot order; none if f has no corner point or an edge of f is on it already.
+    bool try_snapping(Index f, bool beyond_only) {
+        if (slots_.corner_point[f] == kNoIndex) return false;
+        unsigned may_snap = 0;
+        for (int i = 0; i < 3; ++i) {
+            if (*slot(f, i) == slots_.corner_point[f]) return false;
+            if (*slot(f, i) == kNoIndex || snapped_[3 * f + static_cast<Index>(i)]) continue;
+            if (!beyond_only || beyond_corner(f, i)) may_snap |= 1u << i;
+        }
+        for (unsigned edges : {1u, 2u, 4u, 3u, 5u, 6u}) {
+            if ((edges & may_snap) == edges && snap_if_sound(f, edges)) return true;
+        }
+        return false;
+    }
+
     const Connectivity& c_;
     PointSlots slots_;
+    const PieceVertices& ids_;
     const PieceJudge& judge_;
     std::vector<std::uint8_t> snapped_;  ///< per half-edge (#3F): its edge was snapped once
 };
@@ -432,7 +489,7 @@ GuardedPoints guard_slots(const InputSurface& input, const FeatureNormals& featu
     const PieceVertices ids(input.mesh, candidates.points);
     const ReferenceNormals reference{feature_normals, input.normals.vertex};
     const PieceJudge judge(input, reference, ids, options.thin_material_angle_deg);
-    Repairs repairs(input.connectivity, std::move(slots), judge);
+    Repairs repairs(input.connectivity, std::move(slots), ids, judge);
     repair_faults(input.connectivity, first, repairs, log);
     GuardedPoints out{repairs.slots(), report_of(log), std::move(log)};
     RESHARP_EXPENSIVE_ASSERT(only_takes_away(out.accepted, candidates, input.connectivity));
