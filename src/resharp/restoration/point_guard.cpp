@@ -195,10 +195,10 @@ public:
     /// Returns the number of points dropped.
     std::size_t repair(Index f) {
         for (int i = 0; i < 3; ++i) {
-            if (*slot(f, i) != kNoIndex && try_replacing(f, i, kNoIndex)) return 1;
+            if (*slot(f, i) != kNoIndex && replace_if_sound(f, 1u << i, kNoIndex)) return 1;
         }
         if (try_snapping(f, true)) return 0;
-        if (*slot(f, 3) != kNoIndex && try_replacing(f, 3, kNoIndex)) return 1;
+        if (*slot(f, 3) != kNoIndex && replace_if_sound(f, 1u << 3, kNoIndex)) return 1;
         if (try_snapping(f, false)) return 0;
         std::size_t dropped = 0;
         for (int i = 0; i < 4; ++i) {
@@ -226,33 +226,30 @@ private:
         snapped_[h] = 1;
         if (c_.twin[h] != kNoIndex) snapped_[c_.twin[h]] = 1;
     }
-    /// Puts `replacement` in slot i of face f if the face then splits without fault.
-    bool try_replacing(Index f, int i, Index replacement) {
-        const Index kept = *slot(f, i);
-        *slot(f, i) = replacement;
+    /// Puts `replacement` in the slots of face f in `slots` (a bit per slot, 0..3) if the face
+    /// then splits without fault; leaves them as they were otherwise.
+    bool replace_if_sound(Index f, unsigned slots, Index replacement) {
+        std::array<Index, 4> kept{};
+        for (int i = 0; i < 4; ++i) {
+            kept[static_cast<std::size_t>(i)] = *slot(f, i);
+            if (slots & (1u << i)) *slot(f, i) = replacement;
+        }
         const bool sound = fault_of(f) == Fault::None;
-        *slot(f, i) = kept;
-        if (sound) set(f, i, replacement);
-        return sound;
+        for (int i = 0; i < 4; ++i) *slot(f, i) = kept[static_cast<std::size_t>(i)];
+        if (!sound) return false;
+        for (int i = 0; i < 4; ++i) {
+            if (slots & (1u << i)) set(f, i, replacement);
+        }
+        return true;
     }
 
     /// Splits the edges of face f in `edges` (a bit per edge slot) at f's corner point instead of
     /// their own points if the face then splits without fault. Two snapped edges leave the
     /// corner between them joined to the corner point by the faces across them alone.
     bool snap_if_sound(Index f, unsigned edges) {
-        const Index corner = slots_.corner_point[f];
-        std::array<Index, 3> kept{};
+        if (!replace_if_sound(f, edges, slots_.corner_point[f])) return false;
         for (int i = 0; i < 3; ++i) {
-            kept[static_cast<std::size_t>(i)] = *slot(f, i);
-            if (edges & (1u << i)) *slot(f, i) = corner;
-        }
-        const bool sound = fault_of(f) == Fault::None;
-        for (int i = 0; i < 3; ++i) *slot(f, i) = kept[static_cast<std::size_t>(i)];
-        if (!sound) return false;
-        for (int i = 0; i < 3; ++i) {
-            if (!(edges & (1u << i))) continue;
-            set(f, i, corner);
-            mark_snapped(f, i);
+            if (edges & (1u << i)) mark_snapped(f, i);
         }
         return true;
     }
