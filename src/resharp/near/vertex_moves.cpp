@@ -107,11 +107,12 @@ private:
     }
 
     /// Where the planes of the two or three patches around v meet (the sharp edge or corner
-    /// between them), at the point nearest v's current place; none unless each patch has a
-    /// plane its vertices scatter about by at most the junction scatter, each two planes part
-    /// by more than the junction angle, and the point lies within v's input cell. Dual meshers
-    /// place a vertex of the cell a sharp edge crosses between the faces, off both; the edge itself
-    /// is where it belongs (dual contouring's vertex).
+    /// between them): the point of their junction nearest v's current place within v's input
+    /// cell, or, where the junction misses the cell, its point nearest the cell if that is
+    /// within the junction reach. None unless each patch has a plane its vertices scatter about
+    /// by at most the junction scatter and each two planes part by more than the junction
+    /// angle. Dual meshers place a vertex of the cell a sharp edge crosses between the faces,
+    /// off both; the edge itself is where it belongs (dual contouring's vertex).
     std::optional<Vec3> point_on_junction(Index v, Scratch& scratch) const {
         std::array<Index, kMaxSides> patches{};
         const std::size_t count = add_ring_patches(v, patches, 0);
@@ -120,8 +121,7 @@ private:
         std::array<Plane, 3> planes;
         for (std::size_t i = 0; i < count; ++i) {
             const std::optional<PlaneFit> fit = fit_side(patches[i], scratch);
-            if (!fit) return std::nullopt;
-            if (fit->rms_distance > options_.max_junction_scatter * rule_.grid.pitch || false)
+            if (!fit || fit->rms_distance > options_.max_junction_scatter * rule_.grid.pitch)
                 return std::nullopt;
             planes[i] = fit->plane;
         }
@@ -131,30 +131,48 @@ private:
                 if (planes[i].normal.dot(planes[j].normal) >= max_cosine) return std::nullopt;
             }
         }
-        const std::optional<Vec3> y =
-            nearest_on_all(current_.mesh.positions[v], std::span(planes.data(), count));
-        if (!y || !within_reach(input_[v], *y)) return std::nullopt;
+        const std::optional<Junction> junction = Junction::of(std::span(planes.data(), count));
+        if (!junction) return std::nullopt;
+        const Vec3 y = nearest_to_cell(
+            current_.mesh.positions[v], [&](const Vec3& p) { return junction->projection(p); },
+            input_[v]);
+        if (!within_reach(input_[v], y, options_.junction_reach)) return std::nullopt;
         return y;
     }
 
-    /// The point on every one of two or three planes nearest x: x less the least change that
-    /// puts it on all, N^T (N N^T)^-1 (N x - d) for the planes' normals N and offsets d. None
-    /// where three normals do not span space (the Gram matrix is singular).
-    static std::optional<Vec3> nearest_on_all(const Vec3& x, std::span<const Plane> planes) {
-        const Eigen::Index k = static_cast<Eigen::Index>(planes.size());
-        Eigen::Matrix<double, Eigen::Dynamic, 3, 0, 3, 3> normals(k, 3);
-        Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1> excess(k);
-        for (Eigen::Index i = 0; i < k; ++i) {
-            normals.row(i) = planes[static_cast<std::size_t>(i)].normal.transpose();
-            excess[i] = planes[static_cast<std::size_t>(i)].signed_distance(x);
+    /// The points on every one of two or three planes (a line or a point): x goes to the
+    /// nearest of them by the least change that puts it on all, x - N^T (N N^T)^-1 (N x - d) for
+    /// the planes' normals N and offsets d.
+    class Junction {
+    public:
+        /// None where three normals do not span space (the Gram matrix is singular).
+        static std::optional<Junction> of(std::span<const Plane> planes) {
+            Junction j;
+            const Eigen::Index k = static_cast<Eigen::Index>(planes.size());
+            j.normals_.resize(k, 3);
+            j.offsets_.resize(k);
+            for (Eigen::Index i = 0; i < k; ++i) {
+                j.normals_.row(i) = planes[static_cast<std::size_t>(i)].normal.transpose();
+                j.offsets_[i] = planes[static_cast<std::size_t>(i)].offset;
+            }
+            const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3> gram =
+                j.normals_ * j.normals_.transpose();
+            // Unit normals: the Gram determinant is the squared volume (area) they span; the
+            // angle test keeps two apart, three must not lie near one plane.
+            if (std::abs(gram.determinant()) < 1e-6) return std::nullopt;
+            j.gram_ = gram.partialPivLu();
+            return j;
         }
-        const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3> gram =
-            normals * normals.transpose();
-        // Unit normals: the Gram determinant is the squared volume (area) they span; the
-        // angle test above keeps two apart, three must not lie near one plane.
-        if (std::abs(gram.determinant()) < 1e-6) return std::nullopt;
-        return Vec3(x - normals.transpose() * gram.partialPivLu().solve(excess));
-    }
+
+        Vec3 projection(const Vec3& x) const {
+            return x - normals_.transpose() * gram_.solve(normals_ * x - offsets_);
+        }
+
+    private:
+        Eigen::Matrix<double, Eigen::Dynamic, 3, 0, 3, 3> normals_;
+        Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1> offsets_;
+        Eigen::PartialPivLU<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>> gram_;
+    };
 
     /// The sides of v's patches: its own first; for a band vertex the others around it too, and
     /// then only if its own and another have a plane (else it cannot tell where it belongs).
@@ -251,33 +269,51 @@ private:
     }
 
     /// The point of `plane` nearest x within the grid cell of input place `from`: the foot of
-    /// the perpendicular where that is in the cell, else the limit of Dykstra's alternating
-    /// projections onto the cell and the plane (at most kProjectionRounds rounds). A vertex
-    /// of a cell the edge crosses may sit nearer another face's plane than its own, so its foot
-    /// on its own plane can leave the cell where the plane, crossing the cell, does not. None
-    /// if the point found is farther than a thousandth of a pitch off the plane (the plane
-    /// misses the cell).
+    /// the perpendicular where that is in the cell, else the point nearest_to_cell() finds.
+    /// A vertex of a cell the edge crosses may sit nearer another face's plane than its own, so
+    /// its foot on its own plane can leave the cell where the plane, crossing the cell, does
+    /// not. None if the point found, brought into the cell, is farther than a thousandth of a
+    /// pitch off the plane (the plane misses the cell).
     std::optional<Vec3> nearest_in_cell(const Vec3& x, const Plane& plane, const Vec3& from) const {
-        constexpr int kProjectionRounds = 64;
+        const Vec3 y = plane.projection(x);
+        if (within_reach(from, y)) return y;
+        const Vec3 in_cell = cell_of(from).clamp(nearest_to_cell(
+            x, [&](const Vec3& p) { return plane.projection(p); }, from));
+        if (std::abs(plane.signed_distance(in_cell)) > 1e-3 * rule_.grid.pitch) return std::nullopt;
+        return in_cell;
+    }
+
+    /// A closed grid cell.
+    struct Cell {
+        Vec3 low, high;
+        Vec3 clamp(const Vec3& y) const { return y.cwiseMax(low).cwiseMin(high); }
+    };
+
+    Cell cell_of(const Vec3& from) const {
         const double h = rule_.grid.pitch;
         const Vec3 low =
             rule_.grid.origin + h * ((from - rule_.grid.origin) / h).array().floor().matrix();
-        const Vec3 high = low + Vec3::Constant(h);
-        const auto clamp = [&](const Vec3& y) { return Vec3(y.cwiseMax(low).cwiseMin(high)); };
-        Vec3 y = plane.projection(x);
-        if (within_reach(from, y)) return y;
+        return {low, low + Vec3::Constant(h)};
+    }
+
+    /// The limit of Dykstra's alternating projections from x onto the grid cell of input place
+    /// `from` and onto an affine set (a plane, line or point: `project` gives its point nearest
+    /// a point), at most kProjectionRounds rounds, as a point of the set: its point nearest x
+    /// within the cell where the set meets the cell, else near its point nearest the cell.
+    template <class Project>
+    Vec3 nearest_to_cell(const Vec3& x, const Project& project, const Vec3& from) const {
+        constexpr int kProjectionRounds = 64;
+        const Cell cell = cell_of(from);
         Vec3 p = Vec3::Zero(), q = Vec3::Zero();
-        y = x;
+        Vec3 y = x;
         for (int round = 0; round < kProjectionRounds; ++round) {
-            const Vec3 z = clamp(y + p);
+            const Vec3 z = cell.clamp(y + p);
             p = y + p - z;
-            const Vec3 next = plane.projection(z + q);
+            const Vec3 next = project(z + q);
             q = z + q - next;
             y = next;
         }
-        const Vec3 in_cell = clamp(y);
-        if (std::abs(plane.signed_distance(in_cell)) > 1e-3 * h) return std::nullopt;
-        return in_cell;
+        return y;
     }
 
     /// The axis of the grid edge x lies on: its one coordinate off the grid lines; -1 if x is not
@@ -296,9 +332,9 @@ private:
 
     /// Whether y is a place the mesher could have meant for input place x: within x's cell
     /// (near), within x's grid edge (midpoint: the move runs along it). Cells are closed, a
-    /// thousandth of a pitch wider.
-    bool within_reach(const Vec3& x, const Vec3& y) const {
-        const double slack = 1e-3;
+    /// thousandth of a pitch wider, and `reach` pitches wider still.
+    bool within_reach(const Vec3& x, const Vec3& y, double reach = 0.0) const {
+        const double slack = 1e-3 + reach;
         for (int a = 0; a < 3; ++a) {
             const double cell = std::floor((x[a] - rule_.grid.origin[a]) / rule_.grid.pitch);
             const double u = (y[a] - rule_.grid.origin[a]) / rule_.grid.pitch - cell;
@@ -338,10 +374,11 @@ void validate(const Grid& grid, const VertexMoveOptions& options) {
     if (options.fit_rings < 1 || options.fit_rings > 8 || options.min_fit_points < 3 ||
         !(options.max_scatter_near >= 0.0) || !(options.max_scatter_midpoint >= 0.0) ||
         !(options.max_junction_scatter >= 0.0) ||
+        !(options.junction_reach >= 0.0 && options.junction_reach <= 1.0) ||
         !(options.junction_angle_deg >= 0.0 && options.junction_angle_deg < 180.0))
         throw InvalidInput(
             "vertex moves: fit rings in [1, 8], at least 3 fit points, "
-            "scatter limits not negative, junction angle in [0, 180)");
+            "scatter limits not negative, junction angle in [0, 180), junction reach in [0, 1]");
 }
 
 /// Sets moved, moved_count and largest_move from the positions against the input's.
