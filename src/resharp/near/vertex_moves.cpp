@@ -18,8 +18,11 @@ namespace {
 
 /// A vertex takes part in at most this many patches' fits (a corner joins three).
 constexpr std::size_t kMaxSides = 4;
-/// At most this many vertices are gathered around a vertex, nearest rings first.
+/// At most this many vertices are gathered around a vertex, nearest rings first: for the
+/// planes a vertex moves onto, and for its other sides where they are fitted farther out
+/// (VertexMoveOptions::other_side_fit_rings).
 constexpr std::size_t kMaxGathered = 64;
+constexpr std::size_t kMaxOtherSideGathered = 160;
 
 /// One side of a vertex: a patch and the plane fitted to its vertices around the vertex.
 struct Side {
@@ -30,26 +33,27 @@ struct Side {
 struct Scratch {
     std::vector<Index> reached;  ///< the vertices within the rings, nearest rings first
     std::vector<Vec3> points;
-    /// Per vertex (#V): the vertex whose rings last reached it. Each vertex is gathered around
-    /// once, so its own index marks "reached" without clearing between vertices.
+    /// Per vertex (#V): the vertex whose rings last reached it, kNoIndex where cleared. A
+    /// vertex's own index marks "reached"; a gathering clears only the marks of the last.
     std::vector<Index> reached_from;
 };
 
 /// Collects into scratch.reached v and the vertices within `rings` rings of it, ring by ring,
-/// at most kMaxGathered. Bound: rings * kMaxGathered ring walks.
+/// at most `cap`. Bound: rings * cap ring walks.
 void gather_rings(const Mesh& mesh, const Connectivity& connectivity, Index v, int rings,
-                  Scratch& scratch) {
+                  std::size_t cap, Scratch& scratch) {
     std::vector<Index>& reached = scratch.reached;
     if (scratch.reached_from.size() != mesh.vertex_count())
         scratch.reached_from.assign(mesh.vertex_count(), kNoIndex);
+    for (Index j : reached) scratch.reached_from[j] = kNoIndex;  // v may be gathered again
     reached.assign(1, v);
     scratch.reached_from[v] = v;
     std::size_t ring_begin = 0;
-    for (int ring = 0; ring < rings && reached.size() < kMaxGathered; ++ring) {
+    for (int ring = 0; ring < rings && reached.size() < cap; ++ring) {
         const std::size_t ring_end = reached.size();
         for (std::size_t i = ring_begin; i < ring_end; ++i) {
             for_each_ring_vertex(mesh, connectivity, reached[i], [&](Index j) {
-                if (reached.size() < kMaxGathered && scratch.reached_from[j] != v) {
+                if (reached.size() < cap && scratch.reached_from[j] != v) {
                     scratch.reached_from[j] = v;
                     reached.push_back(j);
                 }
@@ -85,7 +89,8 @@ public:
         if (rule_.scope == FitScope::Patches && is_between_patches(v))
             return point_on_junction(v, scratch);
         if (rule_.scope == FitScope::Patches && !may_move(v)) return std::nullopt;
-        gather_rings(current_.mesh, current_.connectivity, v, options_.fit_rings, scratch);
+        gather_rings(current_.mesh, current_.connectivity, v, options_.fit_rings, kMaxGathered,
+                     scratch);
         std::array<Side, kMaxSides> sides;
         const std::size_t count = rule_.scope == FitScope::Patches
                                       ? patch_sides(v, scratch, sides)
@@ -117,7 +122,8 @@ private:
         std::array<Index, kMaxSides> patches{};
         const std::size_t count = add_ring_patches(v, patches, 0);
         if (count < 2 || count > 3) return std::nullopt;
-        gather_rings(current_.mesh, current_.connectivity, v, options_.fit_rings, scratch);
+        gather_rings(current_.mesh, current_.connectivity, v, options_.fit_rings, kMaxGathered,
+                     scratch);
         std::array<Plane, 3> planes;
         for (std::size_t i = 0; i < count; ++i) {
             const std::optional<PlaneFit> fit = fit_side(patches[i], scratch);
@@ -176,6 +182,10 @@ private:
 
     /// The sides of v's patches: its own first; for a band vertex the others around it too, and
     /// then only if its own and another have a plane (else it cannot tell where it belongs).
+    /// Near: where no other side has a plane within the fit rings, the others are fitted again
+    /// within the other side fit rings (a band off the grid axes is wider than three rings reach
+    /// across); they only tell which part of its own plane bounds the solid, and its own plane
+    /// stays the one fitted nearby.
     std::size_t patch_sides(Index v, Scratch& scratch, std::array<Side, kMaxSides>& sides) const {
         std::array<Index, kMaxSides> patches{};
         const std::size_t patch_count = patches_at(v, patches);
@@ -184,6 +194,13 @@ private:
             if (auto fit = fit_side(patches[i], scratch)) sides[count++] = {patches[i], *fit};
         }
         if (count == 0 || sides[0].patch != vertex_patch_[v]) return 0;
+        if (in_band_[v] && count < 2 && rule_.placement == VertexPlacement::Near) {
+            gather_rings(current_.mesh, current_.connectivity, v, options_.other_side_fit_rings,
+                         kMaxOtherSideGathered, scratch);
+            for (std::size_t i = 1; i < patch_count; ++i) {
+                if (auto fit = fit_side(patches[i], scratch)) sides[count++] = {patches[i], *fit};
+            }
+        }
         if (in_band_[v] && count < 2) return 0;
         return count;
     }
@@ -371,13 +388,14 @@ private:
 void validate(const Grid& grid, const VertexMoveOptions& options) {
     if (!(grid.pitch > 0.0) || !std::isfinite(grid.pitch))
         throw InvalidInput("vertex moves: the grid pitch must be positive");
-    if (options.fit_rings < 1 || options.fit_rings > 8 || options.min_fit_points < 3 ||
+    if (options.fit_rings < 1 || options.fit_rings > 8 || options.other_side_fit_rings < 1 ||
+        options.other_side_fit_rings > 8 || options.min_fit_points < 3 ||
         !(options.max_scatter_near >= 0.0) || !(options.max_scatter_midpoint >= 0.0) ||
         !(options.max_junction_scatter >= 0.0) ||
         !(options.junction_reach >= 0.0 && options.junction_reach <= 1.0) ||
         !(options.junction_angle_deg >= 0.0 && options.junction_angle_deg < 180.0))
         throw InvalidInput(
-            "vertex moves: fit rings in [1, 8], at least 3 fit points, "
+            "vertex moves: fit rings and other side fit rings in [1, 8], at least 3 fit points, "
             "scatter limits not negative, junction angle in [0, 180), junction reach in [0, 1]");
 }
 
