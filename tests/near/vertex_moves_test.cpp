@@ -72,6 +72,7 @@ TEST(VertexMoves, SurfaceNetsBandVerticesMoveOntoThePlanesWithinTheirCells) {
     const Planned p =
         plan(SmallPart::PocketedBlock, sim::Mesher::SurfaceNets, VertexPlacement::Near);
     const sim::CsgSolid solid = test::small_part_solid(SmallPart::PocketedBlock);
+    const Detection detected = detect_bands(p.mesh, build_connectivity(p.mesh), {});
     ASSERT_GT(p.moves.moved_count, 50u);
     std::size_t on_surface = 0;
     double before = 0.0, after = 0.0;
@@ -80,7 +81,11 @@ TEST(VertexMoves, SurfaceNetsBandVerticesMoveOntoThePlanesWithinTheirCells) {
             EXPECT_EQ(p.moves.position[v], p.mesh.positions[v]);
             continue;
         }
-        EXPECT_TRUE(in_same_cell(p.grid, p.mesh.positions[v], p.moves.position[v])) << v;
+        // A vertex of no patch goes onto the edge, which may pass beside its cell.
+        const double reach = detected.features.vertex_patch[v] == kNoIndex
+                                 ? VertexMoveOptions{}.junction_reach
+                                 : 0.0;
+        EXPECT_TRUE(in_reach(p.grid, p.mesh.positions[v], p.moves.position[v], reach)) << v;
         const double d = test::distance_along_lines(solid, p.moves.position[v]);
         on_surface += d < 1e-9;
         before += test::distance_along_lines(solid, p.mesh.positions[v]);
@@ -108,7 +113,7 @@ int coordinates_on_block_planes(const Vec3& p) {
 
 // Surface nets leave a vertex in each cell a sharp edge crosses, between the two faces and on
 // neither; segmentation leaves it in the band, on no patch. It goes onto the edge itself, where
-// the planes of the patches around it meet, within its cell.
+// the planes of the patches around it meet, within its cell or half a pitch beside it.
 TEST(VertexMoves, SurfaceNetsVerticesBetweenPatchesMoveOntoTheEdge) {
     const Planned p =
         plan(SmallPart::PocketedBlock, sim::Mesher::SurfaceNets, VertexPlacement::Near);
@@ -117,7 +122,9 @@ TEST(VertexMoves, SurfaceNetsVerticesBetweenPatchesMoveOntoTheEdge) {
     for (Index v = 0; v < p.mesh.vertex_count(); ++v) {
         if (!p.moves.moved[v] || d.features.vertex_patch[v] != kNoIndex) continue;
         ++between;
-        EXPECT_TRUE(in_same_cell(p.grid, p.mesh.positions[v], p.moves.position[v])) << v;
+        EXPECT_TRUE(in_reach(p.grid, p.mesh.positions[v], p.moves.position[v],
+                             VertexMoveOptions{}.junction_reach))
+            << v;
         on_edge += coordinates_on_block_planes(p.moves.position[v]) >= 2;
     }
     EXPECT_GT(between, 20u);
@@ -145,10 +152,11 @@ TEST(VertexMoves, SurfaceNetsVerticesBetweenPatchesReachAnEdgeOffTheGridAxes) {
         EXPECT_TRUE(in_reach(p.grid, p.mesh.positions[v], p.moves.position[v], 0.5)) << v;
         EXPECT_LT(test::distance_along_lines(solid, p.moves.position[v]), 1e-6 * p.grid.pitch) << v;
     }
-    // 41 of 60 here; 32 when only the edge's point nearest the vertex was taken and only within
-    // its cell. The rest fail another of the rule's tests (the planes' fits, their angle).
+    // 45 of 60 here; 41 with the planes fitted within the fit rings only, 32 when besides only
+    // the edge's point nearest the vertex was taken and only within its cell. The rest fail
+    // another of the rule's tests (the planes' fits, their angle).
     EXPECT_GT(between, 20u);
-    EXPECT_GE(moved, 2 * between / 3);
+    EXPECT_GE(moved, 3 * between / 4);
 }
 
 // Off the grid axes a band winds two or three faces wide, and within the three rings a band

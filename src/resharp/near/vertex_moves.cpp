@@ -112,9 +112,10 @@ private:
     }
 
     /// Where the planes of the two or three patches around v meet (the sharp edge or corner
-    /// between them): the point of their junction nearest v's current place within v's input
-    /// cell, or, where the junction misses the cell, its point nearest the cell if that is
-    /// within the junction reach. None unless each patch has a plane its vertices scatter about
+    /// between them; the planes fitted farther out where they have none within the fit rings):
+    /// the point of their junction nearest v's current place within v's input cell, or, where
+    /// the junction misses the cell, its point nearest the cell if that is within the junction
+    /// reach. None unless each patch has a plane its vertices scatter about
     /// by at most the junction scatter and each two planes part by more than the junction
     /// angle. Dual meshers place a vertex of the cell a sharp edge crosses between the faces,
     /// off both; the edge itself is where it belongs (dual contouring's vertex).
@@ -124,9 +125,13 @@ private:
         if (count < 2 || count > 3) return std::nullopt;
         gather_rings(current_.mesh, current_.connectivity, v, options_.fit_rings, kMaxGathered,
                      scratch);
+        const std::span<const Index> around(patches.data(), count);
+        Fits fits;
+        if (fit_sides(around, fits, scratch) < count)
+            fit_missing_farther(v, around, 0, fits, scratch);
         std::array<Plane, 3> planes;
         for (std::size_t i = 0; i < count; ++i) {
-            const std::optional<PlaneFit> fit = fit_side(patches[i], scratch);
+            const std::optional<PlaneFit>& fit = fits[i];
             if (!fit || fit->rms_distance > options_.max_junction_scatter * rule_.grid.pitch)
                 return std::nullopt;
             planes[i] = fit->plane;
@@ -183,26 +188,47 @@ private:
     /// The sides of v's patches: its own first; for a band vertex the others around it too, and
     /// then only if its own and another have a plane (else it cannot tell where it belongs).
     /// Near: where no other side has a plane within the fit rings, the others are fitted again
-    /// within the other side fit rings (a band off the grid axes is wider than three rings reach
-    /// across); they only tell which part of its own plane bounds the solid, and its own plane
-    /// stays the one fitted nearby.
+    /// farther out; they only tell which part of its own plane bounds the solid, and its own
+    /// plane stays the one fitted nearby.
     std::size_t patch_sides(Index v, Scratch& scratch, std::array<Side, kMaxSides>& sides) const {
         std::array<Index, kMaxSides> patches{};
-        const std::size_t patch_count = patches_at(v, patches);
+        const std::span<const Index> around(patches.data(), patches_at(v, patches));
+        Fits fits;
+        const std::size_t fitted = fit_sides(around, fits, scratch);
+        if (!fits[0]) return 0;
+        if (in_band_[v] && fitted < 2 && rule_.placement == VertexPlacement::Near)
+            fit_missing_farther(v, around, 1, fits, scratch);
         std::size_t count = 0;
-        for (std::size_t i = 0; i < patch_count; ++i) {
-            if (auto fit = fit_side(patches[i], scratch)) sides[count++] = {patches[i], *fit};
-        }
-        if (count == 0 || sides[0].patch != vertex_patch_[v]) return 0;
-        if (in_band_[v] && count < 2 && rule_.placement == VertexPlacement::Near) {
-            gather_rings(current_.mesh, current_.connectivity, v, options_.other_side_fit_rings,
-                         kMaxOtherSideGathered, scratch);
-            for (std::size_t i = 1; i < patch_count; ++i) {
-                if (auto fit = fit_side(patches[i], scratch)) sides[count++] = {patches[i], *fit};
-            }
+        for (std::size_t i = 0; i < around.size(); ++i) {
+            if (fits[i]) sides[count++] = {around[i], *fits[i]};
         }
         if (in_band_[v] && count < 2) return 0;
         return count;
+    }
+
+    using Fits = std::array<std::optional<PlaneFit>, kMaxSides>;
+
+    /// The planes of `patches` fitted to their vertices gathered last (fits[i] for patches[i]);
+    /// gives how many have one.
+    std::size_t fit_sides(std::span<const Index> patches, Fits& fits, Scratch& scratch) const {
+        std::size_t fitted = 0;
+        for (std::size_t i = 0; i < patches.size(); ++i) {
+            fits[i] = fit_side(patches[i], scratch);
+            fitted += fits[i].has_value();
+        }
+        return fitted;
+    }
+
+    /// Fits again, within the other side fit rings around v, the planes of patches[first, ...)
+    /// that have none: a band off the grid axes winds two or three faces wide, and within the
+    /// fit rings a side across it often has too few vertices off the band.
+    void fit_missing_farther(Index v, std::span<const Index> patches, std::size_t first, Fits& fits,
+                             Scratch& scratch) const {
+        gather_rings(current_.mesh, current_.connectivity, v, options_.other_side_fit_rings,
+                     kMaxOtherSideGathered, scratch);
+        for (std::size_t i = first; i < patches.size(); ++i) {
+            if (!fits[i]) fits[i] = fit_side(patches[i], scratch);
+        }
     }
 
     /// One side: the plane of every gathered vertex, where they scatter about it as one face.

@@ -25,12 +25,13 @@ namespace resharp {
 struct VertexMoveOptions {
     /// Rings of neighbours searched for a patch's vertices to fit its plane to (at most 64).
     int fit_rings = 3;
-    /// Near: the same for a band vertex's other sides where none has a plane within fit_rings
-    /// (at most 160 vertices). Off the grid axes a band winds two or three faces wide, so within
-    /// three rings a band vertex often has fewer than min_fit_points of the other side's
-    /// vertices off the band, and no plane to tell which part of its own plane bounds the
-    /// solid. Its own plane, which it moves onto, is always fitted within fit_rings: on a curved
-    /// patch a plane fitted this wide leaves the surface (spool lost 0.3 of its Edge F-score).
+    /// Near: the same for a band vertex's other sides where none has a plane within fit_rings,
+    /// and for a junction's planes that have none there (at most 160 vertices). Off the grid axes a
+    /// band winds two or three faces wide, so within three rings a band vertex often has fewer than
+    /// min_fit_points of the other side's vertices off the band, and no plane to tell which part of
+    /// its own plane bounds the solid. Its own plane, which it moves onto, is always fitted within
+    /// fit_rings: on a curved patch a plane fitted this wide leaves the surface (spool lost 0.3 of
+    /// its Edge F-score).
     int other_side_fit_rings = 5;
     /// A patch with fewer vertices than this in reach gets no plane there.
     int min_fit_points = 6;
