@@ -114,11 +114,10 @@ private:
     /// Where the planes of the two or three patches around v meet (the sharp edge or corner
     /// between them; the planes fitted farther out where they have none within the fit rings):
     /// the point of their junction nearest v's current place within v's input cell, or, where
-    /// the junction misses the cell, its point nearest the cell if that is within the junction
-    /// reach. None unless each patch has a plane its vertices scatter about
-    /// by at most the junction scatter and each two planes part by more than the junction
-    /// angle. Dual meshers place a vertex of the cell a sharp edge crosses between the faces,
-    /// off both; the edge itself is where it belongs (dual contouring's vertex).
+    /// the junction misses the cell, the cell's point nearest it. None unless each patch has a
+    /// plane its vertices scatter about by at most the junction scatter and each two planes part by
+    /// more than the junction angle. Dual meshers place a vertex of the cell a sharp edge crosses
+    /// between the faces, off both; the edge itself is where it belongs (dual contouring's vertex).
     std::optional<Vec3> point_on_junction(Index v, Scratch& scratch) const {
         std::array<Index, kMaxSides> patches{};
         const std::size_t count = add_ring_patches(v, patches, 0);
@@ -147,8 +146,11 @@ private:
         const Vec3 y = nearest_to_cell(
             current_.mesh.positions[v], [&](const Vec3& p) { return junction->projection(p); },
             input_[v]);
-        if (!within_reach(input_[v], y, options_.junction_reach)) return std::nullopt;
-        return y;
+        // A cell-mean vertex may be wrong by its cell and no more. Where the edge passes
+        // beside the cell (off the grid axes, the cells along a convex edge whose corners all
+        // lie outside make no vertex; the vertex beside them stands for their part of the
+        // edge), it goes as near the edge as its cell allows.
+        return cell_of(input_[v]).clamp(y);
     }
 
     /// The points on every one of two or three planes (a line or a point): x goes to the
@@ -375,9 +377,9 @@ private:
 
     /// Whether y is a place the mesher could have meant for input place x: within x's cell
     /// (near), within x's grid edge (midpoint: the move runs along it). Cells are closed, a
-    /// thousandth of a pitch wider, and `reach` pitches wider still.
-    bool within_reach(const Vec3& x, const Vec3& y, double reach = 0.0) const {
-        const double slack = 1e-3 + reach;
+    /// thousandth of a pitch wider.
+    bool within_reach(const Vec3& x, const Vec3& y) const {
+        const double slack = 1e-3;
         for (int a = 0; a < 3; ++a) {
             const double cell = std::floor((x[a] - rule_.grid.origin[a]) / rule_.grid.pitch);
             const double u = (y[a] - rule_.grid.origin[a]) / rule_.grid.pitch - cell;
@@ -418,11 +420,10 @@ void validate(const Grid& grid, const VertexMoveOptions& options) {
         options.other_side_fit_rings > 8 || options.min_fit_points < 3 ||
         !(options.max_scatter_near >= 0.0) || !(options.max_scatter_midpoint >= 0.0) ||
         !(options.max_junction_scatter >= 0.0) ||
-        !(options.junction_reach >= 0.0 && options.junction_reach <= 1.0) ||
         !(options.junction_angle_deg >= 0.0 && options.junction_angle_deg < 180.0))
         throw InvalidInput(
             "vertex moves: fit rings and other side fit rings in [1, 8], at least 3 fit points, "
-            "scatter limits not negative, junction angle in [0, 180), junction reach in [0, 1]");
+            "scatter limits not negative, junction angle in [0, 180)");
 }
 
 /// Sets moved, moved_count and largest_move from the positions against the input's.

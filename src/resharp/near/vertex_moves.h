@@ -53,12 +53,6 @@ struct VertexMoveOptions {
     /// and two such planes meet off the true edge by their error over the sine of their angle
     /// (on the pocketed block of the tests, 0.02 to 0.1 pitch against 0 for the rest).
     double max_junction_scatter = 0.01;
-    /// ... and onto the junction's point nearest its cell where the junction misses the cell by
-    /// at most this (in pitches, along each axis). At an edge turned off the grid axes, the
-    /// cells along it whose corners all lie outside the solid (a convex edge) or inside it
-    /// (concave) make no vertex: the mesher saw no crossing there, and the vertex of the cell
-    /// beside them, between the faces, stands for the part of the edge they hold.
-    double junction_reach = 0.5;
 };
 
 struct VertexMoves {
@@ -93,8 +87,8 @@ struct MoveRule {
 /// bounds the solid next to the other sides and within their input cell (the others lie on
 /// their surface already, up to its curvature); a vertex of no patch whose ring meets two or
 /// three patches moves onto where their planes meet (the sharp edge or corner): the point of it
-/// nearest the vertex within its input cell, or, where it misses that cell, its point nearest
-/// the cell within the junction reach. Midpoint: every vertex with a plane of its own
+/// nearest the vertex within its input cell, or, where it misses that cell, the cell's point
+/// nearest it. Midpoint: every vertex with a plane of its own
 /// patch (or, Neighbourhood, around it) moves along its input grid edge onto it, within the edge.
 /// Exact: nothing moves. A vertex without a plane keeps its current position. Each vertex is
 /// decided alone, from the inputs only: the same on any number of threads. The result counts
