@@ -18,8 +18,11 @@ namespace {
 
 /// A vertex takes part in at most this many patches' fits (a corner joins three).
 constexpr std::size_t kMaxSides = 4;
-/// At most this many vertices are gathered around a vertex, nearest rings first.
+/// At most this many vertices are gathered around a vertex, nearest rings first: for the
+/// planes a vertex moves onto, and for its other sides where they are fitted farther out
+/// (VertexMoveOptions::other_side_fit_rings).
 constexpr std::size_t kMaxGathered = 64;
+constexpr std::size_t kMaxOtherSideGathered = 160;
 
 /// One side of a vertex: a patch and the plane fitted to its vertices around the vertex.
 struct Side {
@@ -30,26 +33,27 @@ struct Side {
 struct Scratch {
     std::vector<Index> reached;  ///< the vertices within the rings, nearest rings first
     std::vector<Vec3> points;
-    /// Per vertex (#V): the vertex whose rings last reached it. Each vertex is gathered around
-    /// once, so its own index marks "reached" without clearing between vertices.
+    /// Per vertex (#V): the vertex whose rings last reached it, kNoIndex where cleared. A
+    /// vertex's own index marks "reached"; a gathering clears only the marks of the last.
     std::vector<Index> reached_from;
 };
 
 /// Collects into scratch.reached v and the vertices within `rings` rings of it, ring by ring,
-/// at most kMaxGathered. Bound: rings * kMaxGathered ring walks.
+/// at most `cap`. Bound: rings * cap ring walks.
 void gather_rings(const Mesh& mesh, const Connectivity& connectivity, Index v, int rings,
-                  Scratch& scratch) {
+                  std::size_t cap, Scratch& scratch) {
     std::vector<Index>& reached = scratch.reached;
     if (scratch.reached_from.size() != mesh.vertex_count())
         scratch.reached_from.assign(mesh.vertex_count(), kNoIndex);
+    for (Index j : reached) scratch.reached_from[j] = kNoIndex;  // v may be gathered again
     reached.assign(1, v);
     scratch.reached_from[v] = v;
     std::size_t ring_begin = 0;
-    for (int ring = 0; ring < rings && reached.size() < kMaxGathered; ++ring) {
+    for (int ring = 0; ring < rings && reached.size() < cap; ++ring) {
         const std::size_t ring_end = reached.size();
         for (std::size_t i = ring_begin; i < ring_end; ++i) {
             for_each_ring_vertex(mesh, connectivity, reached[i], [&](Index j) {
-                if (reached.size() < kMaxGathered && scratch.reached_from[j] != v) {
+                if (reached.size() < cap && scratch.reached_from[j] != v) {
                     scratch.reached_from[j] = v;
                     reached.push_back(j);
                 }
@@ -85,7 +89,8 @@ public:
         if (rule_.scope == FitScope::Patches && is_between_patches(v))
             return point_on_junction(v, scratch);
         if (rule_.scope == FitScope::Patches && !may_move(v)) return std::nullopt;
-        gather_rings(current_.mesh, current_.connectivity, v, options_.fit_rings, scratch);
+        gather_rings(current_.mesh, current_.connectivity, v, options_.fit_rings, kMaxGathered,
+                     scratch);
         std::array<Side, kMaxSides> sides;
         const std::size_t count = rule_.scope == FitScope::Patches
                                       ? patch_sides(v, scratch, sides)
@@ -107,21 +112,26 @@ private:
     }
 
     /// Where the planes of the two or three patches around v meet (the sharp edge or corner
-    /// between them), at the point nearest v's current place; none unless each patch has a
-    /// plane its vertices scatter about by at most the junction scatter, each two planes part
-    /// by more than the junction angle, and the point lies within v's input cell. Dual meshers
-    /// place a vertex of the cell a sharp edge crosses between the faces, off both; the edge itself
-    /// is where it belongs (dual contouring's vertex).
+    /// between them; the planes fitted farther out where they have none within the fit rings):
+    /// the point of their junction nearest v's current place within v's input cell, or, where
+    /// the junction misses the cell, the cell's point nearest it. None unless each patch has a
+    /// plane its vertices scatter about by at most the junction scatter and each two planes part by
+    /// more than the junction angle. Dual meshers place a vertex of the cell a sharp edge crosses
+    /// between the faces, off both; the edge itself is where it belongs (dual contouring's vertex).
     std::optional<Vec3> point_on_junction(Index v, Scratch& scratch) const {
         std::array<Index, kMaxSides> patches{};
         const std::size_t count = add_ring_patches(v, patches, 0);
         if (count < 2 || count > 3) return std::nullopt;
-        gather_rings(current_.mesh, current_.connectivity, v, options_.fit_rings, scratch);
+        gather_rings(current_.mesh, current_.connectivity, v, options_.fit_rings, kMaxGathered,
+                     scratch);
+        const std::span<const Index> around(patches.data(), count);
+        Fits fits;
+        if (fit_sides(around, fits, scratch) < count)
+            fit_missing_farther(v, around, 0, fits, scratch);
         std::array<Plane, 3> planes;
         for (std::size_t i = 0; i < count; ++i) {
-            const std::optional<PlaneFit> fit = fit_side(patches[i], scratch);
-            if (!fit) return std::nullopt;
-            if (fit->rms_distance > options_.max_junction_scatter * rule_.grid.pitch || false)
+            const std::optional<PlaneFit>& fit = fits[i];
+            if (!fit || fit->rms_distance > options_.max_junction_scatter * rule_.grid.pitch)
                 return std::nullopt;
             planes[i] = fit->plane;
         }
@@ -131,43 +141,96 @@ private:
                 if (planes[i].normal.dot(planes[j].normal) >= max_cosine) return std::nullopt;
             }
         }
-        const std::optional<Vec3> y =
-            nearest_on_all(current_.mesh.positions[v], std::span(planes.data(), count));
-        if (!y || !within_reach(input_[v], *y)) return std::nullopt;
-        return y;
+        const std::optional<Junction> junction = Junction::of(std::span(planes.data(), count));
+        if (!junction) return std::nullopt;
+        const Vec3 y = nearest_to_cell(
+            current_.mesh.positions[v], [&](const Vec3& p) { return junction->projection(p); },
+            input_[v]);
+        // A cell-mean vertex may be wrong by its cell and no more. Where the edge passes
+        // beside the cell (off the grid axes, the cells along a convex edge whose corners all
+        // lie outside make no vertex; the vertex beside them stands for their part of the
+        // edge), it goes as near the edge as its cell allows.
+        return cell_of(input_[v]).clamp(y);
     }
 
-    /// The point on every one of two or three planes nearest x: x less the least change that
-    /// puts it on all, N^T (N N^T)^-1 (N x - d) for the planes' normals N and offsets d. None
-    /// where three normals do not span space (the Gram matrix is singular).
-    static std::optional<Vec3> nearest_on_all(const Vec3& x, std::span<const Plane> planes) {
-        const Eigen::Index k = static_cast<Eigen::Index>(planes.size());
-        Eigen::Matrix<double, Eigen::Dynamic, 3, 0, 3, 3> normals(k, 3);
-        Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1> excess(k);
-        for (Eigen::Index i = 0; i < k; ++i) {
-            normals.row(i) = planes[static_cast<std::size_t>(i)].normal.transpose();
-            excess[i] = planes[static_cast<std::size_t>(i)].signed_distance(x);
+    /// The points on every one of two or three planes (a line or a point): x goes to the
+    /// nearest of them by the least change that puts it on all, x - N^T (N N^T)^-1 (N x - d) for
+    /// the planes' normals N and offsets d.
+    class Junction {
+    public:
+        /// None where three normals do not span space (the Gram matrix is singular).
+        static std::optional<Junction> of(std::span<const Plane> planes) {
+            Junction j;
+            const Eigen::Index k = static_cast<Eigen::Index>(planes.size());
+            j.normals_.resize(k, 3);
+            j.offsets_.resize(k);
+            for (Eigen::Index i = 0; i < k; ++i) {
+                j.normals_.row(i) = planes[static_cast<std::size_t>(i)].normal.transpose();
+                j.offsets_[i] = planes[static_cast<std::size_t>(i)].offset;
+            }
+            const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3> gram =
+                j.normals_ * j.normals_.transpose();
+            // Unit normals: the Gram determinant is the squared volume (area) they span; the
+            // angle test keeps two apart, three must not lie near one plane.
+            if (std::abs(gram.determinant()) < 1e-6) return std::nullopt;
+            j.gram_ = gram.partialPivLu();
+            return j;
         }
-        const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3> gram =
-            normals * normals.transpose();
-        // Unit normals: the Gram determinant is the squared volume (area) they span; the
-        // angle test above keeps two apart, three must not lie near one plane.
-        if (std::abs(gram.determinant()) < 1e-6) return std::nullopt;
-        return Vec3(x - normals.transpose() * gram.partialPivLu().solve(excess));
-    }
+
+        Vec3 projection(const Vec3& x) const {
+            return x - normals_.transpose() * gram_.solve(normals_ * x - offsets_);
+        }
+
+    private:
+        Eigen::Matrix<double, Eigen::Dynamic, 3, 0, 3, 3> normals_;
+        Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1> offsets_;
+        Eigen::PartialPivLU<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>> gram_;
+    };
 
     /// The sides of v's patches: its own first; for a band vertex the others around it too, and
     /// then only if its own and another have a plane (else it cannot tell where it belongs).
+    /// Near: where no other side has a plane within the fit rings, the others are fitted again
+    /// farther out; they only tell which part of its own plane bounds the solid, and its own
+    /// plane stays the one fitted nearby.
     std::size_t patch_sides(Index v, Scratch& scratch, std::array<Side, kMaxSides>& sides) const {
         std::array<Index, kMaxSides> patches{};
-        const std::size_t patch_count = patches_at(v, patches);
+        const std::span<const Index> around(patches.data(), patches_at(v, patches));
+        Fits fits;
+        const std::size_t fitted = fit_sides(around, fits, scratch);
+        if (!fits[0]) return 0;
+        if (in_band_[v] && fitted < 2 && rule_.placement == VertexPlacement::Near)
+            fit_missing_farther(v, around, 1, fits, scratch);
         std::size_t count = 0;
-        for (std::size_t i = 0; i < patch_count; ++i) {
-            if (auto fit = fit_side(patches[i], scratch)) sides[count++] = {patches[i], *fit};
+        for (std::size_t i = 0; i < around.size(); ++i) {
+            if (fits[i]) sides[count++] = {around[i], *fits[i]};
         }
-        if (count == 0 || sides[0].patch != vertex_patch_[v]) return 0;
         if (in_band_[v] && count < 2) return 0;
         return count;
+    }
+
+    using Fits = std::array<std::optional<PlaneFit>, kMaxSides>;
+
+    /// The planes of `patches` fitted to their vertices gathered last (fits[i] for patches[i]);
+    /// gives how many have one.
+    std::size_t fit_sides(std::span<const Index> patches, Fits& fits, Scratch& scratch) const {
+        std::size_t fitted = 0;
+        for (std::size_t i = 0; i < patches.size(); ++i) {
+            fits[i] = fit_side(patches[i], scratch);
+            fitted += fits[i].has_value();
+        }
+        return fitted;
+    }
+
+    /// Fits again, within the other side fit rings around v, the planes of patches[first, ...)
+    /// that have none: a band off the grid axes winds two or three faces wide, and within the
+    /// fit rings a side across it often has too few vertices off the band.
+    void fit_missing_farther(Index v, std::span<const Index> patches, std::size_t first, Fits& fits,
+                             Scratch& scratch) const {
+        gather_rings(current_.mesh, current_.connectivity, v, options_.other_side_fit_rings,
+                     kMaxOtherSideGathered, scratch);
+        for (std::size_t i = first; i < patches.size(); ++i) {
+            if (!fits[i]) fits[i] = fit_side(patches[i], scratch);
+        }
     }
 
     /// One side: the plane of every gathered vertex, where they scatter about it as one face.
@@ -251,33 +314,51 @@ private:
     }
 
     /// The point of `plane` nearest x within the grid cell of input place `from`: the foot of
-    /// the perpendicular where that is in the cell, else the limit of Dykstra's alternating
-    /// projections onto the cell and the plane (at most kProjectionRounds rounds). A vertex
-    /// of a cell the edge crosses may sit nearer another face's plane than its own, so its foot
-    /// on its own plane can leave the cell where the plane, crossing the cell, does not. None
-    /// if the point found is farther than a thousandth of a pitch off the plane (the plane
-    /// misses the cell).
+    /// the perpendicular where that is in the cell, else the point nearest_to_cell() finds.
+    /// A vertex of a cell the edge crosses may sit nearer another face's plane than its own, so
+    /// its foot on its own plane can leave the cell where the plane, crossing the cell, does
+    /// not. None if the point found, brought into the cell, is farther than a thousandth of a
+    /// pitch off the plane (the plane misses the cell).
     std::optional<Vec3> nearest_in_cell(const Vec3& x, const Plane& plane, const Vec3& from) const {
-        constexpr int kProjectionRounds = 64;
+        const Vec3 y = plane.projection(x);
+        if (within_reach(from, y)) return y;
+        const Vec3 in_cell = cell_of(from).clamp(nearest_to_cell(
+            x, [&](const Vec3& p) { return plane.projection(p); }, from));
+        if (std::abs(plane.signed_distance(in_cell)) > 1e-3 * rule_.grid.pitch) return std::nullopt;
+        return in_cell;
+    }
+
+    /// A closed grid cell.
+    struct Cell {
+        Vec3 low, high;
+        Vec3 clamp(const Vec3& y) const { return y.cwiseMax(low).cwiseMin(high); }
+    };
+
+    Cell cell_of(const Vec3& from) const {
         const double h = rule_.grid.pitch;
         const Vec3 low =
             rule_.grid.origin + h * ((from - rule_.grid.origin) / h).array().floor().matrix();
-        const Vec3 high = low + Vec3::Constant(h);
-        const auto clamp = [&](const Vec3& y) { return Vec3(y.cwiseMax(low).cwiseMin(high)); };
-        Vec3 y = plane.projection(x);
-        if (within_reach(from, y)) return y;
+        return {low, low + Vec3::Constant(h)};
+    }
+
+    /// The limit of Dykstra's alternating projections from x onto the grid cell of input place
+    /// `from` and onto an affine set (a plane, line or point: `project` gives its point nearest
+    /// a point), at most kProjectionRounds rounds, as a point of the set: its point nearest x
+    /// within the cell where the set meets the cell, else near its point nearest the cell.
+    template <class Project>
+    Vec3 nearest_to_cell(const Vec3& x, const Project& project, const Vec3& from) const {
+        constexpr int kProjectionRounds = 64;
+        const Cell cell = cell_of(from);
         Vec3 p = Vec3::Zero(), q = Vec3::Zero();
-        y = x;
+        Vec3 y = x;
         for (int round = 0; round < kProjectionRounds; ++round) {
-            const Vec3 z = clamp(y + p);
+            const Vec3 z = cell.clamp(y + p);
             p = y + p - z;
-            const Vec3 next = plane.projection(z + q);
+            const Vec3 next = project(z + q);
             q = z + q - next;
             y = next;
         }
-        const Vec3 in_cell = clamp(y);
-        if (std::abs(plane.signed_distance(in_cell)) > 1e-3 * h) return std::nullopt;
-        return in_cell;
+        return y;
     }
 
     /// The axis of the grid edge x lies on: its one coordinate off the grid lines; -1 if x is not
@@ -335,12 +416,13 @@ private:
 void validate(const Grid& grid, const VertexMoveOptions& options) {
     if (!(grid.pitch > 0.0) || !std::isfinite(grid.pitch))
         throw InvalidInput("vertex moves: the grid pitch must be positive");
-    if (options.fit_rings < 1 || options.fit_rings > 8 || options.min_fit_points < 3 ||
+    if (options.fit_rings < 1 || options.fit_rings > 8 || options.other_side_fit_rings < 1 ||
+        options.other_side_fit_rings > 8 || options.min_fit_points < 3 ||
         !(options.max_scatter_near >= 0.0) || !(options.max_scatter_midpoint >= 0.0) ||
         !(options.max_junction_scatter >= 0.0) ||
         !(options.junction_angle_deg >= 0.0 && options.junction_angle_deg < 180.0))
         throw InvalidInput(
-            "vertex moves: fit rings in [1, 8], at least 3 fit points, "
+            "vertex moves: fit rings and other side fit rings in [1, 8], at least 3 fit points, "
             "scatter limits not negative, junction angle in [0, 180)");
 }
 

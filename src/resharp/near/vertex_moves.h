@@ -25,6 +25,14 @@ namespace resharp {
 struct VertexMoveOptions {
     /// Rings of neighbours searched for a patch's vertices to fit its plane to (at most 64).
     int fit_rings = 3;
+    /// Near: the same for a band vertex's other sides where none has a plane within fit_rings,
+    /// and for a junction's planes that have none there (at most 160 vertices). Off the grid axes a
+    /// band winds two or three faces wide, so within three rings a band vertex often has fewer than
+    /// min_fit_points of the other side's vertices off the band, and no plane to tell which part of
+    /// its own plane bounds the solid. Its own plane, which it moves onto, is always fitted within
+    /// fit_rings: on a curved patch a plane fitted this wide leaves the surface (spool lost 0.3 of
+    /// its Edge F-score).
+    int other_side_fit_rings = 5;
     /// A patch with fewer vertices than this in reach gets no plane there.
     int min_fit_points = 6;
     /// A fit whose points scatter about it by more (root mean square, in grid pitches) is not
@@ -78,8 +86,9 @@ struct MoveRule {
 /// Near: band vertices move by the shortest way onto the side of their own patch, where it
 /// bounds the solid next to the other sides and within their input cell (the others lie on
 /// their surface already, up to its curvature); a vertex of no patch whose ring meets two or
-/// three patches moves onto where their planes meet (the sharp edge or corner), by the
-/// shortest way and within its input cell. Midpoint: every vertex with a plane of its own
+/// three patches moves onto where their planes meet (the sharp edge or corner): the point of it
+/// nearest the vertex within its input cell, or, where it misses that cell, the cell's point
+/// nearest it. Midpoint: every vertex with a plane of its own
 /// patch (or, Neighbourhood, around it) moves along its input grid edge onto it, within the edge.
 /// Exact: nothing moves. A vertex without a plane keeps its current position. Each vertex is
 /// decided alone, from the inputs only: the same on any number of threads. The result counts
