@@ -64,7 +64,7 @@ TEST(CreaseLosses, OffsetEdgesGetTheFirstStageThatLostThem) {
     // Within a pitch of 0.1 mm they are strays.
     l = lost_to(every_face(input, BandRole::None, PointFate::None), 0.1);
     EXPECT_NEAR(l.false_stray[std::size_t(Origin::Input)], l.mesh_length, 1e-9);
-    for (const auto [fate, loss] :
+    for (const auto& [fate, loss] :
          {std::pair{PointFate::NotPlaced, CreaseLoss::NotPlaced},
           std::pair{PointFate::RefusedByGuard, CreaseLoss::RefusedByGuard},
           std::pair{PointFate::UndoneByHarm, CreaseLoss::UndoneByHarm},

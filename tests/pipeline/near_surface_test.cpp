@@ -108,7 +108,9 @@ TEST(NearSurface, KeepsWhatBecameOfThePointsAndMoves) {
     // Every moved vertex was planned; every face cut into pieces with a new point is Inserted,
     // and only band faces have a fate.
     for (Index v = 0; v < input.vertex_count(); ++v) {
-        if (r.mesh.positions[v] != input.positions[v]) EXPECT_TRUE(s.move_planned[v]) << v;
+        if (r.mesh.positions[v] != input.positions[v]) {
+            EXPECT_TRUE(s.move_planned[v]) << v;
+        }
     }
     std::size_t inserted = 0;
     for (Index f = 0; f < input.face_count(); ++f) {
@@ -119,7 +121,9 @@ TEST(NearSurface, KeepsWhatBecameOfThePointsAndMoves) {
         const Triangle& t = r.mesh.triangles[o_face];
         const bool has_new =
             std::any_of(t.begin(), t.end(), [&](Index v) { return v >= input.vertex_count(); });
-        if (has_new) EXPECT_EQ(s.point_fate[r.source_face[o_face]], PointFate::Inserted);
+        if (has_new) {
+            EXPECT_EQ(s.point_fate[r.source_face[o_face]], PointFate::Inserted);
+        }
     }
     EXPECT_GT(inserted, 0u);
     EXPECT_EQ(r.report.edge_points_inserted + r.report.corner_points_inserted > 0, inserted > 0);
