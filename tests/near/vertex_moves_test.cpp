@@ -87,6 +87,31 @@ TEST(VertexMoves, SurfaceNetsBandVerticesMoveOntoThePlanesWithinTheirCells) {
     EXPECT_LE(p.moves.largest_move, std::sqrt(3.0) * p.grid.pitch);
 }
 
+// On curved faces (the boss's cylinder and cone, the ball-end dimple) a plane fitted to three
+// rings of vertices leaves the face by its sag; band vertices there move onto a second-order
+// surface fitted to the same vertices instead, within their cells.
+TEST(VertexMoves, SurfaceNetsBandVerticesOnCurvedFacesMoveOntoTheirSurface) {
+    const Planned p = plan(SmallPart::BossedPlate, sim::Mesher::SurfaceNets, VertexPlacement::Near);
+    const sim::CsgSolid solid = test::small_part_solid(SmallPart::BossedPlate);
+    std::size_t curved = 0;
+    double before = 0.0, after = 0.0, worst = 0.0;
+    for (Index v = 0; v < p.mesh.vertex_count(); ++v) {
+        if (!p.moves.moved[v]) continue;
+        EXPECT_TRUE(in_same_cell(p.grid, p.mesh.positions[v], p.moves.position[v])) << v;
+        const double d = test::distance_along_lines(solid, p.moves.position[v]);
+        if (d < 1e-6 * p.grid.pitch) continue;  // onto a plane face exactly
+        ++curved;
+        before += test::distance_along_lines(solid, p.mesh.positions[v]);
+        after += d;
+        worst = std::max(worst, d);
+    }
+    // 16 such vertices here: 0.017 mm off the surface on average before, 0.010 after, 0.025
+    // at worst; onto the planes fitted to the same vertices they went 0.036 off, 0.092 at worst.
+    ASSERT_GT(curved, 8u);
+    EXPECT_LT(after, 0.8 * before);
+    EXPECT_LT(worst, 0.1 * p.grid.pitch);
+}
+
 /// How many of p's coordinates lie on a face plane of the pocketed block (the box [0, 14] x
 /// [0, 11] x [0, 6] less the pocket [3, 8] x [3, 8] x [2.8, 7]): two on an edge between them.
 int coordinates_on_block_planes(const Vec3& p) {

@@ -96,7 +96,7 @@ public:
                                       ? patch_sides(v, scratch, sides)
                                       : neighbourhood_side(scratch, sides);
         if (count == 0) return std::nullopt;
-        return point_on_own_side(v, std::span(sides.data(), count));
+        return point_on_own_side(v, std::span(sides.data(), count), scratch);
     }
 
 private:
@@ -270,6 +270,13 @@ private:
     /// The plane of `patch` through its gathered vertices. Near: only vertices off the bands,
     /// which lie on their surface; band vertices are what is to be corrected.
     std::optional<PlaneFit> fit_side(Index patch, Scratch& scratch) const {
+        const Vec3 facing = collect_side_points(patch, scratch);
+        return trusted_fit(scratch.points, facing);
+    }
+
+    /// Into scratch.points the gathered vertices of `patch` (near: off the bands, whose
+    /// vertices lie off their face); gives the sum of their normals, the side the fit faces.
+    Vec3 collect_side_points(Index patch, Scratch& scratch) const {
         scratch.points.clear();
         Vec3 facing = Vec3::Zero();
         for (Index j : scratch.reached) {
@@ -278,7 +285,7 @@ private:
             scratch.points.push_back(current_.mesh.positions[j]);
             facing += current_.normals.vertex[j];
         }
-        return trusted_fit(scratch.points, facing);
+        return facing;
     }
 
     std::optional<PlaneFit> trusted_fit(std::span<const Vec3> points, const Vec3& facing) const {
@@ -388,15 +395,34 @@ private:
         return true;
     }
 
+    /// Near, on a curved side (its vertices scatter about their plane): the point over v of a
+    /// second-order surface fitted to them, where that fits them at least twice as closely as
+    /// the plane and the point lies in v's cell. A plane fitted to three rings of a cylinder of
+    /// radius r leaves it by about (3 h)^2 / 2 r at the band.
+    std::optional<Vec3> point_on_curved(Index v, const Side& own, Scratch& scratch) const {
+        if (rule_.placement != VertexPlacement::Near || own.patch == kNoIndex ||
+            own.fit.rms_distance <= 1e-3 * rule_.grid.pitch)
+            return std::nullopt;
+        collect_side_points(own.patch, scratch);
+        const std::optional<HeightFit> fit =
+            fit_height_quadric(scratch.points, own.fit.plane, current_.mesh.positions[v]);
+        if (!fit || !(fit->rms_distance < 0.5 * own.fit.rms_distance) ||
+            !within_reach(input_[v], fit->point))
+            return std::nullopt;
+        return fit->point;
+    }
+
     /// v's place on its own patch's plane (sides[0]), if within reach of its input place and
     /// bounding the solid next to every other side. Only its own: the feature normals the edge
     /// points are then placed with are those of v's own patch (eq. 5.1), so a band vertex moved
     /// onto another side's plane, though nearer, would meet them off its plane (on the CAD
     /// corpus: Edge F-score 0.530 -> 0.680 on hex_prism aligned, docs/results.md).
-    std::optional<Vec3> point_on_own_side(Index v, std::span<const Side> sides) const {
+    std::optional<Vec3> point_on_own_side(Index v, std::span<const Side> sides,
+                                          Scratch& scratch) const {
         const double tolerance = 1e-3 * rule_.grid.pitch;
         const Side& own = sides[0];
-        const std::optional<Vec3> y = point_on(v, own);
+        std::optional<Vec3> y = point_on_curved(v, own, scratch);
+        if (!y) y = point_on(v, own);
         if (!y || !within_reach(input_[v], *y)) return std::nullopt;
         const bool valid = std::all_of(sides.begin() + 1, sides.end(), [&](const Side& b) {
             return bounds_solid(*y, own, b, tolerance);

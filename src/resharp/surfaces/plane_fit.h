@@ -31,4 +31,19 @@ struct PlaneFit {
 /// than three, or all on one line within rounding).
 std::optional<PlaneFit> fit_plane(std::span<const Vec3> points, const Vec3& facing);
 
+/// The point of a second-order surface fitted to points over the point `at`: the points' heights
+/// over `plane` fitted by least squares as w = c0 + c1 u + c2 v + c3 u^2 + c4 u v + c5 v^2 in a
+/// frame of the plane centred on at's foot, and the point c0 above that foot. Near-surface
+/// restoration moves a vertex on a curved face onto it, where a plane through the face's
+/// vertices around it would leave the face by its sag.
+struct HeightFit {
+    Vec3 point = Vec3::Zero();  ///< on the fitted surface, over at's foot on the plane
+    double rms_distance = 0.0;  ///< root mean square of the points' height residuals
+};
+
+/// None with fewer than 10 points or where they do not fix the six coefficients (all near one
+/// line or conic of the plane, within rounding).
+std::optional<HeightFit> fit_height_quadric(std::span<const Vec3> points, const Plane& plane,
+                                            const Vec3& at);
+
 }  // namespace resharp

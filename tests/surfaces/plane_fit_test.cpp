@@ -1,0 +1,72 @@
+#include "resharp/surfaces/plane_fit.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace resharp {
+namespace {
+
+/// Points of the cylinder y^2 + (z + r)^2 = r^2 (axis along x, top at z = 0) over a patch
+/// `reach` wide around the origin, on a lattice of `step`.
+std::vector<Vec3> cylinder_patch(double r, double reach, double step) {
+    std::vector<Vec3> points;
+    for (double x = -reach; x <= reach + 1e-9; x += step) {
+        for (double y = -reach; y <= reach + 1e-9; y += step)
+            points.emplace_back(x, y, std::sqrt(r * r - y * y) - r);
+    }
+    return points;
+}
+
+TEST(PlaneFit, FitsPointsOfAPlaneExactlyFacingTheGivenSide) {
+    const Vec3 n = Vec3(1, -2, 3).normalized();
+    const Vec3 t = n.unitOrthogonal(), s = n.cross(t);
+    std::vector<Vec3> points;
+    for (int i = 0; i < 5; ++i) {
+        for (int j = 0; j < 4; ++j) points.push_back(Vec3(0.2, 1, -1) + i * t + 0.5 * j * s);
+    }
+    const std::optional<PlaneFit> fit = fit_plane(points, -n);
+    ASSERT_TRUE(fit);
+    EXPECT_TRUE(fit->plane.normal.isApprox(-n, 1e-12));
+    EXPECT_NEAR(fit->rms_distance, 0.0, 1e-12);
+    for (const Vec3& p : points) EXPECT_NEAR(fit->plane.signed_distance(p), 0.0, 1e-12);
+}
+
+TEST(PlaneFit, PointsOnALineGiveNoPlane) {
+    const std::vector<Vec3> line{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {3, 3, 3}};
+    EXPECT_FALSE(fit_plane(line, Vec3::UnitZ()));
+}
+
+// On a cylinder of radius 10 sampled 3 units either way, a plane leaves the surface by its sag
+// (0.45 at the rim); the second-order height fit finds the surface over any point to the
+// cylinder's fourth-order terms.
+TEST(HeightQuadric, FindsACylinderWhereThePlaneMissesIt) {
+    const double r = 10.0;
+    const std::vector<Vec3> points = cylinder_patch(r, 3.0, 0.5);
+    const std::optional<PlaneFit> plane = fit_plane(points, Vec3::UnitZ());
+    ASSERT_TRUE(plane);
+    EXPECT_GT(plane->rms_distance, 0.05);
+    for (const double y : {0.0, 1.3, 2.8}) {
+        const Vec3 on_surface(0.4, y, std::sqrt(r * r - y * y) - r);
+        const Vec3 off = on_surface + Vec3(0.0, 0.05, 0.2);  // a vertex off the face
+        const std::optional<HeightFit> fit = fit_height_quadric(points, plane->plane, off);
+        ASSERT_TRUE(fit) << y;
+        EXPECT_LT(fit->rms_distance, 0.01 * plane->rms_distance) << y;
+        const double radial = std::hypot(fit->point.y(), fit->point.z() + r);
+        EXPECT_NEAR(radial, r, 2e-3) << y;                      // on the cylinder
+        EXPECT_LT((fit->point - on_surface).norm(), 0.1) << y;  // over the vertex
+    }
+}
+
+TEST(HeightQuadric, TooFewOrCollinearPointsGiveNone) {
+    const Plane plane{Vec3::UnitZ(), 0.0};
+    std::vector<Vec3> few = cylinder_patch(10.0, 0.5, 0.5);  // 9 points
+    EXPECT_FALSE(fit_height_quadric(few, plane, Vec3::Zero()));
+    std::vector<Vec3> line;
+    for (int i = 0; i < 12; ++i) line.emplace_back(i, 0.0, 0.1 * i * i);
+    EXPECT_FALSE(fit_height_quadric(line, plane, Vec3::Zero()));
+}
+
+}  // namespace
+}  // namespace resharp
