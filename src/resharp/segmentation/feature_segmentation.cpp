@@ -230,18 +230,19 @@ struct PatchCensus {
     std::vector<std::size_t> faces, vertices, interior_vertices, edge_vertices;
 };
 
+/// `single`: single_ring_patches() of region.
 PatchCensus take_census(const Mesh& mesh, const Connectivity& c, const std::vector<Index>& region,
-                        std::size_t count, const std::vector<std::uint8_t>& is_edge) {
+                        const std::vector<Index>& single, std::size_t count,
+                        const std::vector<std::uint8_t>& is_edge) {
     PatchCensus census{std::vector<std::size_t>(count, 0), std::vector<std::size_t>(count, 0),
                        std::vector<std::size_t>(count, 0), std::vector<std::size_t>(count, 0)};
     for (Index r : region) ++census.faces[r];
     std::vector<Index> patches;
     for (Index v = 0; v < mesh.vertex_count(); ++v) {
-        const Index single = ring_patch_if_single(c, region, v);
-        if (single != kMixedRing) {
-            ++census.vertices[single];
-            census.edge_vertices[single] += is_edge[v];
-            ++census.interior_vertices[single];
+        if (single[v] != kMixedRing) {
+            ++census.vertices[single[v]];
+            census.edge_vertices[single[v]] += is_edge[v];
+            ++census.interior_vertices[single[v]];
             continue;
         }
         ring_patches(c, region, v, patches);
@@ -650,8 +651,11 @@ FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& conne
     std::vector<Index> region =
         grow_regions(mesh, connectivity, face_normals, options.max_normal_angle_deg,
                      options.curved_region_faces, s.grown_patches);
+    // The rings of one region, taken once (in parallel): absorbing tiny patches, making bands,
+    // merging and renumbering map each id to one, which keeps them so.
+    std::vector<Index> single = single_ring_patches(connectivity, region, mesh.vertex_count());
     const PatchCensus census =
-        take_census(mesh, connectivity, region, s.grown_patches, is_edge_vertex);
+        take_census(mesh, connectivity, region, single, s.grown_patches, is_edge_vertex);
     std::vector<PatchRole> role = assign_roles(census, options);
     s.band_patches =
         static_cast<std::size_t>(std::count(role.begin(), role.end(), PatchRole::Band));
@@ -661,8 +665,7 @@ FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& conne
     for (Index& r : region) {
         if (role[r] == PatchRole::Band) r = kNoIndex;
     }
-    // The rings of one patch, taken once: merging and renumbering keep them so.
-    std::vector<Index> single = single_ring_patches(connectivity, region, mesh.vertex_count());
+    single = carry_single_patches(connectivity, region, std::move(single));
     s.merges = merge_patches(mesh, connectivity, face_normals, options.merge_angle_deg,
                              options.keep_sharp_borders_apart, region, single, s.grown_patches);
     s.patch_count = compact_ids(region, s.grown_patches);
