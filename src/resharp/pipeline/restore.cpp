@@ -58,6 +58,12 @@ void validate_mesh(const Mesh& mesh) {
             throw InvalidInput("vertex " + std::to_string(v) + " has a NaN or infinite coordinate");
         }
     }
+    // The largest vertex id first, a loop without branches: only a mesh that fails looks for
+    // the first triangle at fault.
+    Index largest = 0;
+    for (const Triangle& t : mesh.triangles)
+        largest = std::max(largest, std::max({t[0], t[1], t[2]}));
+    if (largest < mesh.vertex_count()) return;
     for (std::size_t f = 0; f < mesh.face_count(); ++f) {
         for (Index v : mesh.triangles[f]) {
             if (v >= mesh.vertex_count()) {
