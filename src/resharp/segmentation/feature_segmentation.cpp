@@ -1,5 +1,9 @@
 #include "resharp/segmentation/feature_segmentation.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -410,6 +414,9 @@ std::size_t unite_smooth_borders(const std::vector<Border>& borders, double shar
     return merges;
 }
 
+/// A vertex's vote on a border of two patches: (lower id, higher id, -cosine of their angle).
+using Vote = std::tuple<Index, Index, double>;
+
 /// Greedy merging of over-segmented patches (§4, Fig. 5): every vertex shared by two patches
 /// votes the angle between the two patches' normals there (as its cosine); pairs are merged in
 /// order of increasing median angle while it stays below the merge angle, keeping patches with
@@ -418,23 +425,38 @@ std::size_t unite_smooth_borders(const std::vector<Border>& borders, double shar
 std::size_t merge_patches(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>& normals,
                           double merge_angle_deg, bool keep_apart, std::vector<Index>& face_patch,
                           const std::vector<Index>& single, std::size_t patch_count) {
-    std::vector<std::tuple<Index, Index, double>> votes;  // (a, b, -cosine): ascending = angle
-    std::vector<Index> patches;
-    std::vector<Vec3> patch_normals;
-    for (Index v = 0; v < mesh.vertex_count(); ++v) {
-        if (single[v] != kMixedRing) continue;  // no border here
-        ring_patches(c, face_patch, v, patches);
-        std::sort(patches.begin(), patches.end());
-        patch_normals.clear();
-        for (Index p : patches) {
-            patch_normals.push_back(patch_mean_normal(mesh, c, normals, face_patch, v, p));
+    // Each vertex votes on its own, in parallel; the votes are then sorted, which leaves them in
+    // one order whatever order the threads gave them in.
+    struct Voting {
+        std::vector<Vote> votes;
+        std::vector<Index> patches;
+        std::vector<Vec3> patch_normals;
+    };
+    tbb::enumerable_thread_specific<Voting> voting;
+    auto vote_at = [&](Index v, Voting& local) {
+        ring_patches(c, face_patch, v, local.patches);
+        std::sort(local.patches.begin(), local.patches.end());
+        local.patch_normals.clear();
+        for (Index p : local.patches) {
+            local.patch_normals.push_back(patch_mean_normal(mesh, c, normals, face_patch, v, p));
         }
-        for (std::size_t a = 0; a < patches.size(); ++a) {
-            for (std::size_t b = a + 1; b < patches.size(); ++b) {
-                votes.emplace_back(patches[a], patches[b], -patch_normals[a].dot(patch_normals[b]));
+        for (std::size_t a = 0; a < local.patches.size(); ++a) {
+            for (std::size_t b = a + 1; b < local.patches.size(); ++b) {
+                local.votes.emplace_back(local.patches[a], local.patches[b],
+                                         -local.patch_normals[a].dot(local.patch_normals[b]));
             }
         }
-    }
+    };
+    using Range = tbb::blocked_range<Index>;
+    tbb::parallel_for(Range(0, static_cast<Index>(mesh.vertex_count()), 4096), [&](const Range& r) {
+        Voting& local = voting.local();
+        for (Index v = r.begin(); v != r.end(); ++v) {
+            if (single[v] == kMixedRing) vote_at(v, local);  // else no border here
+        }
+    });
+    std::vector<Vote> votes;  // ascending: by pair, then by angle
+    for (const Voting& local : voting)
+        votes.insert(votes.end(), local.votes.begin(), local.votes.end());
     std::sort(votes.begin(), votes.end());
     std::vector<Border> pairs;
     for (std::size_t i = 0; i < votes.size();) {
