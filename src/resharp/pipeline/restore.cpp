@@ -10,6 +10,7 @@
 
 #include "resharp/core/assert.h"
 #include "resharp/core/errors.h"
+#include "resharp/core/parallel.h"
 #include "resharp/core/stage_timer.h"
 #include "resharp/curvature/local_height.h"
 #include "resharp/mesh/duplicate_faces.h"
@@ -113,12 +114,12 @@ void withdraw_points_of(const std::vector<Index>& faces, const PointSlots& slots
 /// Per face (#F): 1 where the slots of `after` differ from those of `before` (so its pieces do).
 std::vector<std::uint8_t> changed_faces(const PointSlots& before, const PointSlots& after) {
     std::vector<std::uint8_t> changed(after.corner_point.size(), 0);
-    for (Index f = 0; f < changed.size(); ++f) {
+    for_each_index(changed.size(), 8192, [&](std::size_t f) {
         changed[f] = before.corner_point[f] != after.corner_point[f] ||
                      before.edge_point[3 * f] != after.edge_point[3 * f] ||
                      before.edge_point[3 * f + 1] != after.edge_point[3 * f + 1] ||
                      before.edge_point[3 * f + 2] != after.edge_point[3 * f + 2];
-    }
+    });
     return changed;
 }
 
