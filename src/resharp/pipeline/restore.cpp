@@ -10,6 +10,7 @@
 
 #include "resharp/core/assert.h"
 #include "resharp/core/errors.h"
+#include "resharp/core/parallel.h"
 #include "resharp/core/stage_timer.h"
 #include "resharp/curvature/local_height.h"
 #include "resharp/mesh/duplicate_faces.h"
@@ -58,6 +59,12 @@ void validate_mesh(const Mesh& mesh) {
             throw InvalidInput("vertex " + std::to_string(v) + " has a NaN or infinite coordinate");
         }
     }
+    // The largest vertex id first, a loop without branches: only a mesh that fails looks for
+    // the first triangle at fault.
+    Index largest = 0;
+    for (const Triangle& t : mesh.triangles)
+        largest = std::max(largest, std::max({t[0], t[1], t[2]}));
+    if (largest < mesh.vertex_count()) return;
     for (std::size_t f = 0; f < mesh.face_count(); ++f) {
         for (Index v : mesh.triangles[f]) {
             if (v >= mesh.vertex_count()) {
@@ -107,12 +114,12 @@ void withdraw_points_of(const std::vector<Index>& faces, const PointSlots& slots
 /// Per face (#F): 1 where the slots of `after` differ from those of `before` (so its pieces do).
 std::vector<std::uint8_t> changed_faces(const PointSlots& before, const PointSlots& after) {
     std::vector<std::uint8_t> changed(after.corner_point.size(), 0);
-    for (Index f = 0; f < changed.size(); ++f) {
+    for_each_index(changed.size(), 8192, [&](std::size_t f) {
         changed[f] = before.corner_point[f] != after.corner_point[f] ||
                      before.edge_point[3 * f] != after.edge_point[3 * f] ||
                      before.edge_point[3 * f + 1] != after.edge_point[3 * f + 1] ||
                      before.edge_point[3 * f + 2] != after.edge_point[3 * f + 2];
-    }
+    });
     return changed;
 }
 
@@ -185,9 +192,12 @@ void classify_and_fit_normals(const Mesh& mesh, Detection& d, const RestoreOptio
     });
 }
 
-}  // namespace
-
-Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const RestoreOptions& options) {
+/// detect_bands(), calling after_curvature() once the curvatures are estimated: the normals and
+/// curvatures run in parallel, the segmentations mostly on one thread, so that work started
+/// then finds a second thread free.
+template <class AfterCurvature>
+Detection detect_bands_calling(const Mesh& mesh, Connectivity connectivity,
+                               const RestoreOptions& options, AfterCurvature&& after_curvature) {
     Detection d;
     d.connectivity = std::move(connectivity);
     StageClock clock(d.stage_time, options.stop);
@@ -196,6 +206,7 @@ Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const Restor
     clock.run(Stage::Curvature, [&] {
         curvatures = estimate_principal_curvatures(mesh, d.connectivity, d.normals.vertex);
     });
+    after_curvature();
     clock.run(Stage::EdgeSegmentation, [&] {
         d.edges = segment_edges(mesh, d.connectivity, curvatures, d.normals.face, options.edges);
     });
@@ -205,6 +216,12 @@ Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const Restor
     });
     classify_and_fit_normals(mesh, d, options, clock);
     return d;
+}
+
+}  // namespace
+
+Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const RestoreOptions& options) {
+    return detect_bands_calling(mesh, std::move(connectivity), options, [] {});
 }
 
 namespace {
@@ -427,8 +444,9 @@ private:
 
     /// The placement measurement and the detection on the input: both paths start from the
     /// input's detection, and the measurement reads only the mesh. With a second thread in the
-    /// arena the measurement runs beside the detection (up to a quarter of restore()'s time on
-    /// an STL file, issue 11's speed budget); with one, it runs first, so that its buffers are
+    /// arena the measurement runs beside the detection's segmentations, once its normals and
+    /// curvatures, which run in parallel, are done (up to a quarter of restore()'s time on an
+    /// STL file, issue 11's speed budget); with one, it runs first, so that its buffers are
     /// gone before the detection allocates (the peak-memory budget). The detection stays on
     /// the calling thread, which is the one StopWhen::cancelled is promised to be asked from.
     void measure_placement_and_detect(const Mesh& mesh, Connectivity connectivity,
@@ -439,10 +457,11 @@ private:
             return;
         }
         tbb::task_group beside;
-        beside.run([&] { placement = choose_placement(mesh); });
         // If the detection throws (cancelled), the group's destructor waits for the
         // measurement before `placement` goes out of scope.
-        detection = detect_bands(mesh, std::move(connectivity), options_);
+        detection = detect_bands_calling(mesh, std::move(connectivity), options_, [&] {
+            beside.run([&] { placement = choose_placement(mesh); });
+        });
         beside.wait();
     }
 

@@ -9,6 +9,7 @@
 
 #include "resharp/core/assert.h"
 #include "resharp/core/errors.h"
+#include "resharp/core/parallel.h"
 #include "resharp/mesh/geometry.h"
 #include "resharp/restoration/pieces.h"
 
@@ -175,10 +176,19 @@ class Repairs {
 public:
     Repairs(const Connectivity& c, PointSlots slots, const PieceVertices& ids,
             const PieceJudge& judge)
-        : c_(c), slots_(std::move(slots)), ids_(ids), judge_(judge), snapped_(c.twin.size(), 0) {}
+        : c_(c),
+          slots_(std::move(slots)),
+          ids_(ids),
+          judge_(judge),
+          snapped_(c.twin.size(), 0),
+          touched_(slots_.corner_point.size(), 0) {}
 
     const PointSlots& slots() const { return slots_; }
+    /// The slots decided; the repairs are done with.
+    PointSlots take_slots() && { return std::move(slots_); }
     Fault fault_of(Index f) const { return judge_.fault_of(slots_, f); }
+    /// Whether a repair has changed a slot of face f (its fault may differ from the start's).
+    bool touched(Index f) const { return touched_[f] != 0; }
 
     /// Makes face f split soundly by changing as little as possible, in this order:
     /// - drop a single edge point (the first that is enough, in slot order): two close points
@@ -217,9 +227,12 @@ private:
     /// Sets slot i of face f, and for an edge the same slot seen from the face across it.
     void set(Index f, int i, Index value) {
         *slot(f, i) = value;
+        touched_[f] = 1;
         if (i == 3) return;
         const Index twin = c_.twin[3 * f + static_cast<Index>(i)];
-        if (twin != kNoIndex) slots_.edge_point[twin] = value;
+        if (twin == kNoIndex) return;
+        slots_.edge_point[twin] = value;
+        touched_[face_of(twin)] = 1;
     }
     void mark_snapped(Index f, int i) {
         const Index h = 3 * f + static_cast<Index>(i);
@@ -296,6 +309,7 @@ private:
     const PieceVertices& ids_;
     const PieceJudge& judge_;
     std::vector<std::uint8_t> snapped_;  ///< per half-edge (#3F): its edge was snapped once
+    std::vector<std::uint8_t> touched_;  ///< per face (#F): a slot of it was set
 };
 
 /// Every slot of `accepted` holds the point it held among the candidates, its face's corner
@@ -442,11 +456,18 @@ GuardAgain faces_to_guard_again(const Connectivity& c, const SharpPoints& candid
 /// one of its edges; repairs are bounded as Repairs says (GuardReport::repairs).
 void repair_faults(const Connectivity& c, std::span<const Index> first, Repairs& repairs,
                    std::vector<GuardRepair>& log) {
+    // The faults of the faces as they start, judged in parallel (a face's fault reads only its
+    // own slots): the worklist pops each of them once before any face it pushes, and takes
+    // this verdict where no repair has set a slot of the face since.
+    std::vector<Fault> at_start(first.size());
+    for_each_index(first.size(), 256,
+                   [&](std::size_t i) { at_start[i] = repairs.fault_of(first[i]); });
     Worklist work(repairs.slots().corner_point.size(), first);
-    while (!work.empty()) {
+    for (std::size_t popped = 0; !work.empty(); ++popped) {
         const Index f = work.pop();
         if (!repairs.slots().has_points(f)) continue;
-        const Fault fault = repairs.fault_of(f);
+        const Fault fault =
+            popped < first.size() && !repairs.touched(f) ? at_start[popped] : repairs.fault_of(f);
         if (fault == Fault::None) continue;
         const std::size_t dropped = repairs.repair(f);
         log.push_back({f, fault == Fault::Quality, static_cast<std::uint32_t>(dropped)});
@@ -488,7 +509,7 @@ GuardedPoints guard_slots(const InputSurface& input, const FeatureNormals& featu
     const PieceJudge judge(input, reference, ids, options.thin_material_angle_deg);
     Repairs repairs(input.connectivity, std::move(slots), ids, judge);
     repair_faults(input.connectivity, first, repairs, log);
-    GuardedPoints out{repairs.slots(), report_of(log), std::move(log)};
+    GuardedPoints out{std::move(repairs).take_slots(), report_of(log), std::move(log)};
     RESHARP_EXPENSIVE_ASSERT(only_takes_away(out.accepted, candidates, input.connectivity));
     return out;
 }

@@ -1,9 +1,11 @@
 #include "resharp/restoration/sharp_points.h"
 
 #include <algorithm>
+#include <cstdint>
 
 #include "resharp/core/assert.h"
 #include "resharp/core/errors.h"
+#include "resharp/core/parallel.h"
 #include "resharp/mesh/geometric_order.h"
 #include "resharp/mesh/geometry.h"
 #include "resharp/surfaces/junction.h"
@@ -209,38 +211,74 @@ struct PointBeyondChord {
     Vec3 x;
 };
 
+/// What became of the crossing edge of one half-edge (edge_placement()).
+enum class EdgeFate : std::uint8_t {
+    None,           ///< not a crossing edge, or its twin places it
+    MissingNormal,  ///< an end has no feature normal
+    Refused,        ///< by the flip test (eq. 5.4)
+    OnEdge,         ///< a point on the edge
+    Beyond,         ///< second order: a point beyond the chord, for a face to hold
+};
+
+struct EdgePlacement {
+    EdgeFate fate = EdgeFate::None;
+    std::size_t fallbacks = 0;  ///< second-order solves that fell back to the tangent planes
+    Vec3 x = Vec3::Zero();
+};
+
 /// The point of the crossing edge of half-edge h, if h runs from its end first in sweep order
 /// (so each edge is placed once, in the same direction whatever the corners' order) and both
-/// ends have feature normals (counted where not): on the edge where eq. 5.4 holds; with
-/// second-order placement, where it fails, handed to `beyond` for a face that holds it.
-void place_edge_point(const Mesh& mesh, const Connectivity& c, const BandClassification& bands,
-                      const std::vector<Vec3>& normals, const SideSurfaces& sides, Index h,
-                      SharpPoints& out, std::vector<PointBeyondChord>& beyond) {
-    const Index twin = c.twin[h];
-    if (!bands.is_crossing[h] || twin == kNoIndex) return;
+/// ends have feature normals: on the edge where eq. 5.4 holds; with second-order placement,
+/// where it fails, beyond the chord. Reads nothing another edge's placement writes.
+EdgePlacement edge_placement(const Mesh& mesh, const Connectivity& c,
+                             const BandClassification& bands, const std::vector<Vec3>& normals,
+                             const SideSurfaces& sides, Index h) {
+    EdgePlacement out;
+    if (!bands.is_crossing[h] || c.twin[h] == kNoIndex) return out;
     const Index u = tail_vertex(mesh, h);
     const Index v = head_vertex(mesh, h);
-    if (!vertex_swept_before(mesh, u, v)) return;  // the twin places it
+    if (!vertex_swept_before(mesh, u, v)) return out;  // the twin places it
     const Vec3& a = mesh.positions[u];
     const Vec3& b = mesh.positions[v];
     if (normals[u].isZero(0.0) || normals[v].isZero(0.0)) {
-        ++out.missing_normal;
-        return;
+        out.fate = EdgeFate::MissingNormal;
+        return out;
     }
     const std::optional<Vec3> m = edge_point(a, normals[u], b, normals[v]);
     const bool on_edge = m && passes_flip_test(a, normals[u], b, normals[v]);
     if (!m || (!on_edge && !sides.second_order())) {
-        ++out.refused_by_flip_test;
-        return;
+        out.fate = EdgeFate::Refused;
+        return out;
     }
-    const Vec3 x = sides.edge_point(u, v, *m, out.first_order_fallbacks);
-    if (!on_edge) {
-        beyond.push_back({h, x});
-        return;
+    out.x = sides.edge_point(u, v, *m, out.fallbacks);
+    out.fate = on_edge ? EdgeFate::OnEdge : EdgeFate::Beyond;
+    return out;
+}
+
+/// Takes edge_placement()'s result for half-edge h into `out` (counts, and the point on the
+/// edge numbered next) or, for a point beyond the chord, into `beyond`.
+void take_edge_placement(const Connectivity& c, Index h, const EdgePlacement& placed,
+                         SharpPoints& out, std::vector<PointBeyondChord>& beyond) {
+    out.first_order_fallbacks += placed.fallbacks;
+    switch (placed.fate) {
+        case EdgeFate::None:
+            return;
+        case EdgeFate::MissingNormal:
+            ++out.missing_normal;
+            return;
+        case EdgeFate::Refused:
+            ++out.refused_by_flip_test;
+            return;
+        case EdgeFate::Beyond:
+            beyond.push_back({h, placed.x});
+            return;
+        case EdgeFate::OnEdge:
+            out.slots.edge_point[h] = out.slots.edge_point[c.twin[h]] =
+                static_cast<Index>(out.points.size());
+            out.points.push_back(placed.x);
+            ++out.edge_points;
+            return;
     }
-    out.slots.edge_point[h] = out.slots.edge_point[twin] = static_cast<Index>(out.points.size());
-    out.points.push_back(x);
-    ++out.edge_points;
 }
 
 /// Puts each point beyond its chord inside a face that holds it (holding_face()), in sweep order
@@ -274,12 +312,19 @@ void place_points_beyond_chords(const Mesh& mesh, const Connectivity& c,
 void place_edge_points(const Mesh& mesh, const Connectivity& c, const BandClassification& bands,
                        const std::vector<Vec3>& normals, const SideSurfaces& sides,
                        SharpPoints& out) {
-    std::vector<PointBeyondChord> beyond;
+    std::vector<Index> halfedges;  // of the faces with a crossing edge (few), in face order
     for (Index f = 0; f < bands.face_role.size(); ++f) {
-        if (bands.face_role[f] == BandRole::None) continue;  // no crossing edge: most faces
-        for (Index h = 3 * f; h < 3 * f + 3; ++h)
-            place_edge_point(mesh, c, bands, normals, sides, h, out, beyond);
+        if (bands.face_role[f] == BandRole::None) continue;
+        for (Index h = 3 * f; h < 3 * f + 3; ++h) halfedges.push_back(h);
     }
+    // The edges are solved in parallel, then numbered in face order on one thread.
+    std::vector<EdgePlacement> placed(halfedges.size());
+    for_each_index(halfedges.size(), 64, [&](std::size_t i) {
+        placed[i] = edge_placement(mesh, c, bands, normals, sides, halfedges[i]);
+    });
+    std::vector<PointBeyondChord> beyond;
+    for (std::size_t i = 0; i < halfedges.size(); ++i)
+        take_edge_placement(c, halfedges[i], placed[i], out, beyond);
     place_points_beyond_chords(mesh, c, bands, std::move(beyond), out);
 }
 

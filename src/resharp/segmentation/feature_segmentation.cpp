@@ -1,5 +1,9 @@
 #include "resharp/segmentation/feature_segmentation.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -67,12 +71,13 @@ struct Growth {
     std::size_t curved_limit;
 };
 
-/// Breadth-first growth of region `id` from `seed` over faces whose region is `open`, across
+/// Breadth-first growth of region `id` from `seed` over the faces open(f) holds for, across
 /// manifold edges whose faces' normals differ by less than the angle; past `curved_limit` faces
 /// only into faces within the angle of the seed (0: no limit). Leaves the region's faces in
 /// `taken`, in the order taken. In sweep order each face's half-edges are crossed in geometric
 /// order, so the region does not depend on how the mesh numbers its faces or corners.
-void grow_from(const Growth& g, Index seed, Index open, Index id, bool sweep_order,
+template <class Open>
+void grow_from(const Growth& g, Index seed, Open&& open, Index id, bool sweep_order,
                std::vector<Index>& region, std::vector<Index>& taken) {
     taken.assign(1, seed);
     region[seed] = id;
@@ -89,7 +94,7 @@ void grow_from(const Growth& g, Index seed, Index open, Index id, bool sweep_ord
             const Index twin = g.c.twin[h];
             if (twin == kNoIndex) continue;
             const Index v = face_of(twin);
-            if (region[v] != open || g.normals[u].dot(g.normals[v]) <= g.min_cosine) continue;
+            if (!open(v) || g.normals[u].dot(g.normals[v]) <= g.min_cosine) continue;
             const bool limited = g.curved_limit != 0 && taken.size() >= g.curved_limit;
             if (limited && g.normals[seed].dot(g.normals[v]) <= g.min_cosine) continue;
             region[v] = id;
@@ -100,20 +105,31 @@ void grow_from(const Growth& g, Index seed, Index open, Index id, bool sweep_ord
 
 /// Grows the faces of one component again as limited regions, seeded in sweep order: the first
 /// face not yet taken seeds the next region, as the face order of a mesher sweeping its grid
-/// slab by slab would. Numbers them from `next`; returns the next id.
-Index regrow_in_sweep_order(const Growth& g, std::span<const Index> component, Index next,
-                            std::vector<Index>& region) {
+/// slab by slab would. Numbers them in `region` from 0; returns how many there are. The faces
+/// of other components (`component_of` (#F) is not `number`) are never read in `region`:
+/// others may be growing there meanwhile.
+Index regrow_in_sweep_order(const Growth& g, std::span<const Index> component, Index number,
+                            const std::vector<Index>& component_of, std::vector<Index>& region) {
     constexpr Index kOpen = kNoIndex - 1;  // ids stay below #F
     for (Index f : component) region[f] = kOpen;
     FacesInSweepOrder seeds(g.mesh, component);
-    auto open = [&](Index f) { return region[f] == kOpen; };
+    auto open = [&](Index f) { return component_of[f] == number && region[f] == kOpen; };
     std::vector<Index> taken;
+    Index next = 0;
     // Bound: every seed starts a region that takes at least itself, so at most |component|.
     for (Index seed = seeds.next(open); seed != kNoIndex; seed = seeds.next(open)) {
-        grow_from(g, seed, kOpen, next++, true, region, taken);
+        grow_from(g, seed, open, next++, true, region, taken);
     }
     return next;
 }
+
+/// A component grown again (regrow_in_sweep_order()): its number among all components, its
+/// faces, and how many regions it became.
+struct Regrown {
+    Index component;
+    std::vector<Index> faces;
+    Index regions = 0;
+};
 
 /// §4 steps 1-3: breadth-first growth across manifold edges while neighbouring face normals
 /// differ by less than the angle. A region holding `curved_limit` faces (0: no limit) only
@@ -123,27 +139,43 @@ Index regrow_in_sweep_order(const Growth& g, std::span<const Index> component, I
 /// refuse (normals_within_angle()) is grown again with seeds and neighbours in geometric order,
 /// so which faces share a region does not depend on the face order, the corners' rotation or
 /// the orientation (issue 12). Ids follow the face order of the components' first faces; they
-/// are never compared where a tie must not depend on it (wins_tie()).
+/// are never compared where a tie must not depend on it (wins_tie()). The components grown
+/// again are independent (no growth crosses from one to another), so they grow in parallel,
+/// each numbering its regions from 0 in an array of its own, and take their ids after.
 std::vector<Index> grow_regions(const Mesh& mesh, const Connectivity& c,
                                 const std::vector<Vec3>& normals, double max_angle_deg,
                                 std::size_t curved_limit, std::size_t& region_count) {
     const Growth unlimited{mesh, c, normals, std::cos(max_angle_deg * kDegree), 0};
     const Growth limited{mesh, c, normals, unlimited.min_cosine, curved_limit};
-    std::vector<Index> region(normals.size(), kNoIndex);
+    std::vector<Index> region(normals.size(), kNoIndex);  // first the component of each face
     std::vector<Index> component;
-    Index next = 0;
+    std::vector<Regrown> regrown;
+    Index components = 0;
+    auto open = [&](Index f) { return region[f] == kNoIndex; };
     // Bound: each seed takes at least itself, so at most #F components.
     for (Index seed = 0; seed < normals.size(); ++seed) {
         if (region[seed] != kNoIndex) continue;
-        grow_from(unlimited, seed, kNoIndex, next, false, region, component);
-        if (curved_limit == 0 || component.size() <= curved_limit ||
-            normals_within_angle(normals, component, max_angle_deg)) {
-            ++next;
-        } else {
-            next = regrow_in_sweep_order(limited, component, next, region);
+        grow_from(unlimited, seed, open, components, false, region, component);
+        if (curved_limit != 0 && component.size() > curved_limit &&
+            !normals_within_angle(normals, component, max_angle_deg)) {
+            regrown.push_back({components, component});
         }
+        ++components;
     }
-    region_count = next;
+    region_count = components;
+    if (regrown.empty()) return region;  // the components are the regions
+    // Per face, its region's number within its component (0 where that is not grown again).
+    std::vector<Index> local(normals.size(), 0);
+    for_each_index(regrown.size(), 1, [&](std::size_t i) {
+        Regrown& r = regrown[i];
+        r.regions = regrow_in_sweep_order(limited, r.faces, r.component, region, local);
+    });
+    std::vector<Index> first_id(components + 1, 1);  // per component, as prefix sums
+    first_id[0] = 0;
+    for (const Regrown& r : regrown) first_id[r.component + 1] = r.regions;
+    for (std::size_t k = 1; k < first_id.size(); ++k) first_id[k] += first_id[k - 1];
+    for (Index f = 0; f < region.size(); ++f) region[f] = first_id[region[f]] + local[f];
+    region_count = first_id.back();
     return region;
 }
 
@@ -202,18 +234,19 @@ struct PatchCensus {
     std::vector<std::size_t> faces, vertices, interior_vertices, edge_vertices;
 };
 
+/// `single`: single_ring_patches() of region.
 PatchCensus take_census(const Mesh& mesh, const Connectivity& c, const std::vector<Index>& region,
-                        std::size_t count, const std::vector<std::uint8_t>& is_edge) {
+                        const std::vector<Index>& single, std::size_t count,
+                        const std::vector<std::uint8_t>& is_edge) {
     PatchCensus census{std::vector<std::size_t>(count, 0), std::vector<std::size_t>(count, 0),
                        std::vector<std::size_t>(count, 0), std::vector<std::size_t>(count, 0)};
     for (Index r : region) ++census.faces[r];
     std::vector<Index> patches;
     for (Index v = 0; v < mesh.vertex_count(); ++v) {
-        const Index single = ring_patch_if_single(c, region, v);
-        if (single != kMixedRing) {
-            ++census.vertices[single];
-            census.edge_vertices[single] += is_edge[v];
-            ++census.interior_vertices[single];
+        if (single[v] != kMixedRing) {
+            ++census.vertices[single[v]];
+            census.edge_vertices[single[v]] += is_edge[v];
+            ++census.interior_vertices[single[v]];
             continue;
         }
         ring_patches(c, region, v, patches);
@@ -381,6 +414,9 @@ std::size_t unite_smooth_borders(const std::vector<Border>& borders, double shar
     return merges;
 }
 
+/// A vertex's vote on a border of two patches: (lower id, higher id, -cosine of their angle).
+using Vote = std::tuple<Index, Index, double>;
+
 /// Greedy merging of over-segmented patches (§4, Fig. 5): every vertex shared by two patches
 /// votes the angle between the two patches' normals there (as its cosine); pairs are merged in
 /// order of increasing median angle while it stays below the merge angle, keeping patches with
@@ -389,23 +425,38 @@ std::size_t unite_smooth_borders(const std::vector<Border>& borders, double shar
 std::size_t merge_patches(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>& normals,
                           double merge_angle_deg, bool keep_apart, std::vector<Index>& face_patch,
                           const std::vector<Index>& single, std::size_t patch_count) {
-    std::vector<std::tuple<Index, Index, double>> votes;  // (a, b, -cosine): ascending = angle
-    std::vector<Index> patches;
-    std::vector<Vec3> patch_normals;
-    for (Index v = 0; v < mesh.vertex_count(); ++v) {
-        if (single[v] != kMixedRing) continue;  // no border here
-        ring_patches(c, face_patch, v, patches);
-        std::sort(patches.begin(), patches.end());
-        patch_normals.clear();
-        for (Index p : patches) {
-            patch_normals.push_back(patch_mean_normal(mesh, c, normals, face_patch, v, p));
+    // Each vertex votes on its own, in parallel; the votes are then sorted, which leaves them in
+    // one order whatever order the threads gave them in.
+    struct Voting {
+        std::vector<Vote> votes;
+        std::vector<Index> patches;
+        std::vector<Vec3> patch_normals;
+    };
+    tbb::enumerable_thread_specific<Voting> voting;
+    auto vote_at = [&](Index v, Voting& local) {
+        ring_patches(c, face_patch, v, local.patches);
+        std::sort(local.patches.begin(), local.patches.end());
+        local.patch_normals.clear();
+        for (Index p : local.patches) {
+            local.patch_normals.push_back(patch_mean_normal(mesh, c, normals, face_patch, v, p));
         }
-        for (std::size_t a = 0; a < patches.size(); ++a) {
-            for (std::size_t b = a + 1; b < patches.size(); ++b) {
-                votes.emplace_back(patches[a], patches[b], -patch_normals[a].dot(patch_normals[b]));
+        for (std::size_t a = 0; a < local.patches.size(); ++a) {
+            for (std::size_t b = a + 1; b < local.patches.size(); ++b) {
+                local.votes.emplace_back(local.patches[a], local.patches[b],
+                                         -local.patch_normals[a].dot(local.patch_normals[b]));
             }
         }
-    }
+    };
+    using Range = tbb::blocked_range<Index>;
+    tbb::parallel_for(Range(0, static_cast<Index>(mesh.vertex_count()), 4096), [&](const Range& r) {
+        Voting& local = voting.local();
+        for (Index v = r.begin(); v != r.end(); ++v) {
+            if (single[v] == kMixedRing) vote_at(v, local);  // else no border here
+        }
+    });
+    std::vector<Vote> votes;  // ascending: by pair, then by angle
+    for (const Voting& local : voting)
+        votes.insert(votes.end(), local.votes.begin(), local.votes.end());
     std::sort(votes.begin(), votes.end());
     std::vector<Border> pairs;
     for (std::size_t i = 0; i < votes.size();) {
@@ -622,8 +673,11 @@ FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& conne
     std::vector<Index> region =
         grow_regions(mesh, connectivity, face_normals, options.max_normal_angle_deg,
                      options.curved_region_faces, s.grown_patches);
+    // The rings of one region, taken once (in parallel): absorbing tiny patches, making bands,
+    // merging and renumbering map each id to one, which keeps them so.
+    std::vector<Index> single = single_ring_patches(connectivity, region, mesh.vertex_count());
     const PatchCensus census =
-        take_census(mesh, connectivity, region, s.grown_patches, is_edge_vertex);
+        take_census(mesh, connectivity, region, single, s.grown_patches, is_edge_vertex);
     std::vector<PatchRole> role = assign_roles(census, options);
     s.band_patches =
         static_cast<std::size_t>(std::count(role.begin(), role.end(), PatchRole::Band));
@@ -633,8 +687,7 @@ FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& conne
     for (Index& r : region) {
         if (role[r] == PatchRole::Band) r = kNoIndex;
     }
-    // The rings of one patch, taken once: merging and renumbering keep them so.
-    std::vector<Index> single = single_ring_patches(connectivity, region, mesh.vertex_count());
+    single = carry_single_patches(connectivity, region, std::move(single));
     s.merges = merge_patches(mesh, connectivity, face_normals, options.merge_angle_deg,
                              options.keep_sharp_borders_apart, region, single, s.grown_patches);
     s.patch_count = compact_ids(region, s.grown_patches);
