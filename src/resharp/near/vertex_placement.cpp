@@ -579,21 +579,25 @@ bool around_one_edge(const std::array<std::array<double, 3>, 3>& cell) {
 /// counts if one choice fits (at most 2^9 choices).
 bool is_dual(const Mesh& mesh, const Triangle& t, const Grid& grid, double within) {
     std::array<std::array<double, 3>, 3> cell;
-    int on_line = 0;  // bit 3k + a: coordinate a of vertex k lies on a line
+    unsigned on_line = 0;  // bit 3k + a: coordinate a of vertex k lies on a line
     for (int k = 0; k < 3; ++k) {
         const Vec3& p = mesh.positions[t[k]];
         for (int a = 0; a < 3; ++a) {
             const double u = (p[a] - grid.origin[a]) / grid.pitch;
-            const bool on = std::abs(u - round_half_away(u)) <= within;
-            cell[k][a] = on ? round_half_away(u) : std::floor(u);
-            on_line |= on ? 1 << (3 * k + a) : 0;
+            const double nearest = round_half_away(u);
+            const bool on = std::abs(u - nearest) <= within;
+            // std::floor(u) to the bit, without a second rounding: u lies within half of the
+            // integer `nearest`, or is that integer (|u| of 2^52 or more, or not finite).
+            cell[k][a] = on || u >= nearest ? nearest : nearest - 1.0;
+            on_line |= on ? 1u << (3 * k + a) : 0u;
         }
     }
     // Each subset of the on-line coordinates moved to the cell below.
-    for (int below = on_line;; below = (below - 1) & on_line) {
+    for (unsigned below = on_line;; below = (below - 1) & on_line) {
         std::array<std::array<double, 3>, 3> choice = cell;
-        for (int bit = 0; bit < 9; ++bit) {
-            if ((below >> bit) & 1) choice[bit / 3][bit % 3] -= 1.0;
+        for (unsigned bits = below; bits != 0; bits &= bits - 1) {
+            const int bit = std::countr_zero(bits);
+            choice[bit / 3][bit % 3] -= 1.0;
         }
         if (around_one_edge(choice)) return true;
         if (below == 0) return false;
@@ -648,8 +652,9 @@ std::string percent(double share) {
 }
 
 /// The estimate on a known grid: on its edges (midpoint or exact), dual to it (near), or exact.
+/// `dual`: the grid's dual_share() where the caller has it.
 PlacementEstimate classify_on(const Mesh& mesh, const Grid& grid, double tol,
-                              const std::string& source) {
+                              const std::string& source, std::optional<double> dual = {}) {
     PlacementEstimate e;
     e.grid = grid;
     e.pitch = grid.pitch;
@@ -667,7 +672,7 @@ PlacementEstimate classify_on(const Mesh& mesh, const Grid& grid, double tol,
                         : "exact (crossings or bisection along the edges)");
         return e;
     }
-    e.dual_triangle_share = dual_share(mesh, grid, tol);
+    e.dual_triangle_share = dual ? *dual : dual_share(mesh, grid, tol);
     e.placement = e.dual_triangle_share >= kDualShare && s.on_edge <= kDualOnEdgeShare
                       ? VertexPlacement::Near
                       : VertexPlacement::Exact;
@@ -735,7 +740,7 @@ std::vector<std::optional<double>> dual_shares_near_best(const Mesh& mesh,
     const std::size_t stride = dual_stride(mesh);
     std::vector<double> rough;
     for (const Grid& g : candidates)
-        rough.push_back(*dual_share_reaching(mesh, g, tol, 16 * stride, 0.0));
+        rough.push_back(*dual_share_reaching(mesh, g, tol, 64 * stride, 0.0));
     std::vector<std::size_t> order(candidates.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(),
@@ -828,7 +833,7 @@ PlacementEstimate estimate_within(const Mesh& mesh, double tol, Search search, S
         return e;
     }
     const auto [dual, share] = best_dual_grid(mesh, candidates, tol);
-    if (share >= kDualShare) return classify_on(mesh, dual, tol, source);
+    if (share >= kDualShare) return classify_on(mesh, dual, tol, source, share);
     e.pitch = dual.pitch;
     e.on_grid_edge_share = edge_stats(mesh, dual, tol).on_edge;
     e.dual_triangle_share = share;
