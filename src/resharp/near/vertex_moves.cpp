@@ -7,6 +7,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 #include <optional>
 
@@ -360,12 +361,19 @@ private:
         Vec3 y = x;
         for (int round = 0; round < kProjectionRounds; ++round) {
             const Vec3 z = cell.clamp(y + p);
-            p = y + p - z;
+            const Vec3 p_next = y + p - z;
             const Vec3 next = project(z + q);
-            q = z + q - next;
-            y = next;
+            const Vec3 q_next = z + q - next;
+            // A round that leaves its terms as they were, to the bit, leaves them so in every
+            // round after: the rounds left would give the same y.
+            if (same_bits(p_next, p) && same_bits(q_next, q) && same_bits(next, y)) break;
+            p = p_next, q = q_next, y = next;
         }
         return y;
+    }
+
+    static bool same_bits(const Vec3& a, const Vec3& b) {
+        return std::memcmp(a.data(), b.data(), sizeof(double) * 3) == 0;
     }
 
     /// The axis of the grid edge x lies on: its one coordinate off the grid lines; -1 if x is not
