@@ -730,10 +730,12 @@ double stray_on_lines(const Mesh& mesh, const std::vector<Vec3>& normals, const 
     return static_cast<double>(stray) / (3.0 * static_cast<double>(mesh.vertex_count()));
 }
 
-/// Per candidate, its dual_share(), or nothing where that is below the best share less
-/// kDualShareSlack (all best_dual_grid() needs of it). Each share on every 16th of the triangles
-/// first orders the full counts, best first: the first then sets a bar that most candidates (shares
-/// of 0.8 to 0.99 on a surface-nets mesh) fall below within a few hundred triangles.
+/// Per candidate, its dual_share(), or nothing where best_dual_grid() need not know it: where
+/// it is below the best share less kDualShareSlack, or, once a share of 1 (every triangle dual,
+/// the most there is) makes the best known, in a lattice after one that holds a grid near the
+/// best (the first such lattice is the one taken). Each share on every 64th of the triangles
+/// first orders the full counts, best first: the first then sets a bar that most candidates
+/// (shares of 0.8 to 0.99 on a surface-nets mesh) fall below within a few hundred triangles.
 std::vector<std::optional<double>> dual_shares_near_best(const Mesh& mesh,
                                                          const std::vector<Grid>& candidates,
                                                          double tol) {
@@ -747,10 +749,15 @@ std::vector<std::optional<double>> dual_shares_near_best(const Mesh& mesh,
                      [&](std::size_t a, std::size_t b) { return rough[a] > rough[b]; });
     std::vector<std::optional<double>> shares(candidates.size());
     double highest = 0.0;  // at most the best share: the bar below it holds for the best too
+    std::size_t first_full_lattice = candidates.size();  // of a share within the slack of 1
     for (std::size_t i : order) {
+        if (highest == 1.0 && i / kShifts > first_full_lattice) continue;
         shares[i] =
             dual_share_reaching(mesh, candidates[i], tol, stride, highest - kDualShareSlack);
-        if (shares[i]) highest = std::max(highest, *shares[i]);
+        if (!shares[i]) continue;
+        highest = std::max(highest, *shares[i]);
+        if (*shares[i] >= 1.0 - kDualShareSlack)
+            first_full_lattice = std::min(first_full_lattice, i / kShifts);
     }
     return shares;
 }
