@@ -11,8 +11,9 @@ namespace resharp {
 
 namespace {
 
-/// The normal of face f scaled by twice its area.
-Vec3 area_vector(const Mesh& mesh, std::size_t f) {
+/// The normal of face f scaled by twice its area. Inline: surface_normals() takes it for every
+/// face, and as a call it cost mech 4.8 M instructions more.
+inline Vec3 area_vector(const Mesh& mesh, std::size_t f) {
     const Triangle& t = mesh.triangles[f];
     const Vec3& a = mesh.positions[t[0]];
     return (mesh.positions[t[1]] - a).cross(mesh.positions[t[2]] - a);
@@ -65,6 +66,36 @@ SurfaceNormals surface_normals(const Mesh& mesh, const Connectivity& connectivit
     for_each_index(n.face.size(), 8192,
                    [&](std::size_t f) { n.face[f] = unit_or_zero(n.face[f]); });
     return n;
+}
+
+SurfaceNormals surface_normals_after_moves(const Mesh& mesh, const Connectivity& connectivity,
+                                           SurfaceNormals unmoved,
+                                           std::span<const std::uint8_t> moved) {
+    std::vector<std::uint8_t> face_changed(mesh.face_count(), 0);
+    for (Index v = 0; v < moved.size(); ++v) {
+        if (!moved[v]) continue;
+        for (Index f : connectivity.faces_around(v)) face_changed[f] = 1;
+    }
+    std::vector<Index> faces, vertices;  // those whose normals the moves change
+    std::vector<std::uint8_t> vertex_changed(mesh.vertex_count(), 0);
+    for (Index f = 0; f < mesh.face_count(); ++f) {
+        if (!face_changed[f]) continue;
+        faces.push_back(f);
+        for (Index v : mesh.triangles[f]) {
+            if (!vertex_changed[v]) vertices.push_back(v);
+            vertex_changed[v] = 1;
+        }
+    }
+    // Each sums its ring's area vectors in ring order, as surface_normals() does: the same bits.
+    for_each_index(vertices.size(), 1024, [&](std::size_t i) {
+        Vec3 sum = Vec3::Zero();
+        for (Index f : connectivity.faces_around(vertices[i])) sum += area_vector(mesh, f);
+        unmoved.vertex[vertices[i]] = unit_or_zero(sum);
+    });
+    for_each_index(faces.size(), 4096, [&](std::size_t i) {
+        unmoved.face[faces[i]] = unit_or_zero(area_vector(mesh, faces[i]));
+    });
+    return unmoved;
 }
 
 std::vector<Vec3> vertex_normals(const Mesh& mesh, const Connectivity& connectivity) {

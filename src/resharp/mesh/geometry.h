@@ -1,6 +1,8 @@
 #pragma once
 /// Per-face and per-vertex geometric quantities every stage needs.
 
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "resharp/core/types.h"
@@ -30,6 +32,14 @@ struct SurfaceNormals {
 /// Takes the mesh and its connectivity; gives both kinds of normal, computing each face's cross
 /// product once where the two functions above would compute it four times.
 SurfaceNormals surface_normals(const Mesh& mesh, const Connectivity& connectivity);
+
+/// surface_normals() of `mesh` from `unmoved`, those of a mesh with the same faces whose
+/// vertices flagged in `moved` (#V) sat elsewhere: only the faces with a moved corner and the
+/// vertices of those faces are computed again, the same bits as surface_normals() gives. A near
+/// mesh's vertex moves touch a few percent of its faces.
+SurfaceNormals surface_normals_after_moves(const Mesh& mesh, const Connectivity& connectivity,
+                                           SurfaceNormals unmoved,
+                                           std::span<const std::uint8_t> moved);
 
 /// Per vertex (#V): area-weighted mean of the incident face normals, normalised; zero where
 /// every incident face is degenerate. Area weights need no trigonometry, which matters at a

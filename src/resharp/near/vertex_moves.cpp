@@ -7,6 +7,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 #include <optional>
 
@@ -36,22 +37,32 @@ struct Scratch {
     /// Per vertex (#V): the vertex whose rings last reached it, kNoIndex where cleared. A
     /// vertex's own index marks "reached"; a gathering clears only the marks of the last.
     std::vector<Index> reached_from;
+    int rings = 0;  ///< how many rings `reached` holds, all of each (0: none, or cut short)
+    std::size_t last_ring_begin = 0;  ///< where the outermost of them begins in `reached`
 };
 
 /// Collects into scratch.reached v and the vertices within `rings` rings of it, ring by ring,
-/// at most `cap`. Bound: rings * cap ring walks.
+/// at most `cap`. Where scratch.reached holds fewer rings of v, all of each, and fewer vertices
+/// than `cap`, it goes on from there: a vertex whose planes have too few points within the fit
+/// rings is gathered again farther out, and the rings it has are the first ones it would
+/// gather. Bound: rings * cap ring walks.
 void gather_rings(const Mesh& mesh, const Connectivity& connectivity, Index v, int rings,
                   std::size_t cap, Scratch& scratch) {
     std::vector<Index>& reached = scratch.reached;
     if (scratch.reached_from.size() != mesh.vertex_count())
         scratch.reached_from.assign(mesh.vertex_count(), kNoIndex);
-    for (Index j : reached) scratch.reached_from[j] = kNoIndex;  // v may be gathered again
-    reached.assign(1, v);
-    scratch.reached_from[v] = v;
-    std::size_t ring_begin = 0;
-    for (int ring = 0; ring < rings && reached.size() < cap; ++ring) {
+    const bool goes_on =
+        scratch.rings > 0 && reached[0] == v && scratch.rings <= rings && reached.size() < cap;
+    if (!goes_on) {
+        for (Index j : reached) scratch.reached_from[j] = kNoIndex;  // v may be gathered again
+        reached.assign(1, v);
+        scratch.reached_from[v] = v;
+        scratch.rings = 0;
+        scratch.last_ring_begin = 0;
+    }
+    for (; scratch.rings < rings && reached.size() < cap; ++scratch.rings) {
         const std::size_t ring_end = reached.size();
-        for (std::size_t i = ring_begin; i < ring_end; ++i) {
+        for (std::size_t i = scratch.last_ring_begin; i < ring_end; ++i) {
             for_each_ring_vertex(mesh, connectivity, reached[i], [&](Index j) {
                 if (reached.size() < cap && scratch.reached_from[j] != v) {
                     scratch.reached_from[j] = v;
@@ -59,8 +70,10 @@ void gather_rings(const Mesh& mesh, const Connectivity& connectivity, Index v, i
                 }
             });
         }
-        ring_begin = ring_end;
+        scratch.last_ring_begin = ring_end;
     }
+    // Rings cut short by the cap are not whole: the next gathering starts anew.
+    if (reached.size() >= cap) scratch.rings = 0, scratch.last_ring_begin = 0;
 }
 
 class MovePlanner {
@@ -360,12 +373,19 @@ private:
         Vec3 y = x;
         for (int round = 0; round < kProjectionRounds; ++round) {
             const Vec3 z = cell.clamp(y + p);
-            p = y + p - z;
+            const Vec3 p_next = y + p - z;
             const Vec3 next = project(z + q);
-            q = z + q - next;
-            y = next;
+            const Vec3 q_next = z + q - next;
+            // A round that leaves its terms as they were, to the bit, leaves them so in every
+            // round after: the rounds left would give the same y.
+            if (same_bits(p_next, p) && same_bits(q_next, q) && same_bits(next, y)) break;
+            p = p_next, q = q_next, y = next;
         }
         return y;
+    }
+
+    static bool same_bits(const Vec3& a, const Vec3& b) {
+        return std::memcmp(a.data(), b.data(), sizeof(double) * 3) == 0;
     }
 
     /// The axis of the grid edge x lies on: its one coordinate off the grid lines; -1 if x is not

@@ -31,6 +31,9 @@ namespace {
 constexpr double kOnEdgeShare = 0.9999;
 constexpr double kMidpointShare = 0.9;  // of the vertices on grid edges, at their edge's middle
 constexpr double kDualShare = 0.9;      // triangles on the four cells around one grid edge
+/// Dual grids whose shares come within this of the best one's fit as well (a pitch a little off
+/// still fits most triangles of a small part).
+constexpr double kDualShareSlack = 0.005;
 /// Cell means lie off the edges of the grid they are dual to (a cell's centre is on none of its
 /// edges), but a grid-edge mesh with a few stray vertices (a fin, a patch from another mesher)
 /// has a share of its vertices on the edges of the grid it is dual to (those on edges along the
@@ -569,42 +572,68 @@ bool around_one_edge(const std::array<std::array<double, 3>, 3>& cell) {
     return adjacent && one_slab;
 }
 
-/// The share of (at most `samples` evenly spread) triangles whose vertices lie in three of the
-/// four cells of `grid` around one grid edge, as every triangle of a surface-nets mesh does
-/// (half of the quad dual to a crossed edge). A coordinate on a grid line (within `tol`: a mean
-/// of crossings all on one face of its cell, as on a flat face lying on a grid plane) may be in
-/// the cell on either side; the triangle counts if one choice fits (at most 2^9 choices).
-double dual_share(const Mesh& mesh, const Grid& grid, double tol, std::size_t samples) {
-    const std::size_t stride = std::max<std::size_t>(1, mesh.face_count() / samples);
-    const double within = 2.0 * tol / grid.pitch;
-    std::size_t tested = 0, dual = 0;
-    for (std::size_t f = 0; f < mesh.face_count(); f += stride) {
-        std::array<std::array<double, 3>, 3> cell;
-        int on_line = 0;  // bit 3k + a: coordinate a of vertex k lies on a line
-        for (int k = 0; k < 3; ++k) {
-            const Vec3& p = mesh.positions[mesh.triangles[f][k]];
-            for (int a = 0; a < 3; ++a) {
-                const double u = (p[a] - grid.origin[a]) / grid.pitch;
-                const bool on = std::abs(u - round_half_away(u)) <= within;
-                cell[k][a] = on ? round_half_away(u) : std::floor(u);
-                on_line |= on ? 1 << (3 * k + a) : 0;
-            }
-        }
-        ++tested;
-        // Each subset of the on-line coordinates moved to the cell below.
-        for (int below = on_line;; below = (below - 1) & on_line) {
-            std::array<std::array<double, 3>, 3> choice = cell;
-            for (int bit = 0; bit < 9; ++bit) {
-                if ((below >> bit) & 1) choice[bit / 3][bit % 3] -= 1.0;
-            }
-            if (around_one_edge(choice)) {
-                ++dual;
-                break;
-            }
-            if (below == 0) break;
+/// Whether the vertices of `t` lie in three of the four cells of `grid` around one grid edge, as
+/// every triangle of a surface-nets mesh does (half of the quad dual to a crossed edge). A
+/// coordinate on a grid line (within `within` pitches: a mean of crossings all on one face of its
+/// cell, as on a flat face lying on a grid plane) may be in the cell on either side; the triangle
+/// counts if one choice fits (at most 2^9 choices).
+bool is_dual(const Mesh& mesh, const Triangle& t, const Grid& grid, double within) {
+    std::array<std::array<double, 3>, 3> cell;
+    unsigned on_line = 0;  // bit 3k + a: coordinate a of vertex k lies on a line
+    for (int k = 0; k < 3; ++k) {
+        const Vec3& p = mesh.positions[t[k]];
+        for (int a = 0; a < 3; ++a) {
+            const double u = (p[a] - grid.origin[a]) / grid.pitch;
+            const double nearest = round_half_away(u);
+            const bool on = std::abs(u - nearest) <= within;
+            // std::floor(u) to the bit, without a second rounding: u lies within half of the
+            // integer `nearest`, or is that integer (|u| of 2^52 or more, or not finite).
+            cell[k][a] = on || u >= nearest ? nearest : nearest - 1.0;
+            on_line |= on ? 1u << (3 * k + a) : 0u;
         }
     }
-    return tested > 0 ? static_cast<double>(dual) / static_cast<double>(tested) : 0.0;
+    // Each subset of the on-line coordinates moved to the cell below.
+    for (unsigned below = on_line;; below = (below - 1) & on_line) {
+        std::array<std::array<double, 3>, 3> choice = cell;
+        for (unsigned bits = below; bits != 0; bits &= bits - 1) {
+            const int bit = std::countr_zero(bits);
+            choice[bit / 3][bit % 3] -= 1.0;
+        }
+        if (around_one_edge(choice)) return true;
+        if (below == 0) return false;
+    }
+}
+
+/// The step between the triangles dual_share() tests: at most about kSampledTriangles, evenly
+/// spread.
+std::size_t dual_stride(const Mesh& mesh) {
+    return std::max<std::size_t>(1, mesh.face_count() / kSampledTriangles);
+}
+
+/// The share of every `stride`-th triangle (from the first) that is_dual() on `grid`, when it
+/// is at least `at_least`, else nothing. Stops as soon as the triangles not yet looked at, were
+/// all of them dual, could no longer lift the share to `at_least`. Same count, same division,
+/// whether it stops or not: the share it gives is the same bits.
+std::optional<double> dual_share_reaching(const Mesh& mesh, const Grid& grid, double tol,
+                                          std::size_t stride, double at_least) {
+    const double within = 2.0 * tol / grid.pitch;
+    const std::size_t tested = (mesh.face_count() + stride - 1) / stride;
+    const double n = static_cast<double>(tested);
+    std::size_t dual = 0;
+    for (std::size_t i = 0; i < tested; ++i) {
+        dual += is_dual(mesh, mesh.triangles[i * stride], grid, within) ? 1 : 0;
+        // On the largest share still possible: every triangle after i dual.
+        if (i % 64 == 63 && static_cast<double>(dual + (tested - 1 - i)) / n < at_least) {
+            return std::nullopt;
+        }
+    }
+    const double share = tested > 0 ? static_cast<double>(dual) / n : 0.0;
+    return share >= at_least ? std::optional(share) : std::nullopt;
+}
+
+/// The share of the triangles dual_stride() spreads that is_dual() on `grid`.
+double dual_share(const Mesh& mesh, const Grid& grid, double tol) {
+    return *dual_share_reaching(mesh, grid, tol, dual_stride(mesh), 0.0);
 }
 
 std::string describe(const Grid& g) {
@@ -623,8 +652,9 @@ std::string percent(double share) {
 }
 
 /// The estimate on a known grid: on its edges (midpoint or exact), dual to it (near), or exact.
+/// `dual`: the grid's dual_share() where the caller has it.
 PlacementEstimate classify_on(const Mesh& mesh, const Grid& grid, double tol,
-                              const std::string& source) {
+                              const std::string& source, std::optional<double> dual = {}) {
     PlacementEstimate e;
     e.grid = grid;
     e.pitch = grid.pitch;
@@ -642,7 +672,7 @@ PlacementEstimate classify_on(const Mesh& mesh, const Grid& grid, double tol,
                         : "exact (crossings or bisection along the edges)");
         return e;
     }
-    e.dual_triangle_share = dual_share(mesh, grid, tol, kSampledTriangles);
+    e.dual_triangle_share = dual ? *dual : dual_share(mesh, grid, tol);
     e.placement = e.dual_triangle_share >= kDualShare && s.on_edge <= kDualOnEdgeShare
                       ? VertexPlacement::Near
                       : VertexPlacement::Exact;
@@ -700,30 +730,64 @@ double stray_on_lines(const Mesh& mesh, const std::vector<Vec3>& normals, const 
     return static_cast<double>(stray) / (3.0 * static_cast<double>(mesh.vertex_count()));
 }
 
+/// Per candidate, its dual_share(), or nothing where best_dual_grid() need not know it: where
+/// it is below the best share less kDualShareSlack, or, once a share of 1 (every triangle dual,
+/// the most there is) makes the best known, in a lattice after one that holds a grid near the
+/// best (the first such lattice is the one taken). Each share on every 64th of the triangles
+/// first orders the full counts, best first: the first then sets a bar that most candidates
+/// (shares of 0.8 to 0.99 on a surface-nets mesh) fall below within a few hundred triangles.
+std::vector<std::optional<double>> dual_shares_near_best(const Mesh& mesh,
+                                                         const std::vector<Grid>& candidates,
+                                                         double tol) {
+    const std::size_t stride = dual_stride(mesh);
+    std::vector<double> rough;
+    for (const Grid& g : candidates)
+        rough.push_back(*dual_share_reaching(mesh, g, tol, 64 * stride, 0.0));
+    std::vector<std::size_t> order(candidates.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return rough[a] > rough[b]; });
+    std::vector<std::optional<double>> shares(candidates.size());
+    double highest = 0.0;  // at most the best share: the bar below it holds for the best too
+    std::size_t first_full_lattice = candidates.size();  // of a share within the slack of 1
+    for (std::size_t i : order) {
+        if (highest == 1.0 && i / kShifts > first_full_lattice) continue;
+        shares[i] =
+            dual_share_reaching(mesh, candidates[i], tol, stride, highest - kDualShareSlack);
+        if (!shares[i]) continue;
+        highest = std::max(highest, *shares[i]);
+        if (*shares[i] >= 1.0 - kDualShareSlack)
+            first_full_lattice = std::min(first_full_lattice, i / kShifts);
+    }
+    return shares;
+}
+
 /// The candidate with the most dual triangles, and its share. A pitch a little off still fits
-/// most triangles of a small part: the first lattice within half a percent of the best share is
+/// most triangles of a small part: the first lattice within kDualShareSlack of the best share is
 /// taken. Where flat faces lie on grid planes, the grid shifted by half a cell across them fits
 /// as well: of that lattice's shifts, the one with the fewest stray coordinates on grid lines
 /// (stray_on_lines).
 std::pair<Grid, double> best_dual_grid(const Mesh& mesh, const std::vector<Grid>& candidates,
                                        double tol) {
-    std::vector<double> shares;
-    for (const Grid& g : candidates) shares.push_back(dual_share(mesh, g, tol, kSampledTriangles));
-    const double best = *std::max_element(shares.begin(), shares.end());
+    const std::vector<std::optional<double>> shares = dual_shares_near_best(mesh, candidates, tol);
+    const double best = **std::max_element(shares.begin(), shares.end());
+    const auto near_best = [&](std::size_t i) {
+        return shares[i] && *shares[i] >= best - kDualShareSlack;
+    };
     const std::vector<Vec3> normals = vertex_normals(mesh);
     // The candidates come in lattice order, kShifts per lattice: the first lattice that
     // reaches the best share, its shift with the fewest stray coordinates.
     std::size_t first = 0;
-    while (shares[first] < best - 0.005) ++first;
+    while (!near_best(first)) ++first;
     const std::size_t lattice_end = (first / kShifts + 1) * kShifts;
     std::size_t chosen = first;
     double fewest_stray = 2.0;
     for (std::size_t i = first; i < lattice_end && i < candidates.size(); ++i) {
-        if (shares[i] < best - 0.005) continue;
+        if (!near_best(i)) continue;
         const double stray = stray_on_lines(mesh, normals, candidates[i], tol);
         if (stray < fewest_stray) chosen = i, fewest_stray = stray;
     }
-    return {candidates[chosen], shares[chosen]};
+    return {candidates[chosen], *shares[chosen]};
 }
 
 /// What estimate_within() looks for: a grid whose edges hold the vertices, or one the mesh is
@@ -776,7 +840,7 @@ PlacementEstimate estimate_within(const Mesh& mesh, double tol, Search search, S
         return e;
     }
     const auto [dual, share] = best_dual_grid(mesh, candidates, tol);
-    if (share >= kDualShare) return classify_on(mesh, dual, tol, source);
+    if (share >= kDualShare) return classify_on(mesh, dual, tol, source, share);
     e.pitch = dual.pitch;
     e.on_grid_edge_share = edge_stats(mesh, dual, tol).on_edge;
     e.dual_triangle_share = share;

@@ -246,13 +246,16 @@ HarmReport held_against(const InputSurface& input, const HarmReference* referenc
 }  // namespace
 
 Detection detect_bands_after_moves(const Mesh& mesh, const Detection& before,
+                                   const InputSurface& input, std::span<const std::uint8_t> moved,
                                    const RestoreOptions& options) {
     Detection d;
     d.connectivity = before.connectivity;
     d.edges = before.edges;
     d.features = before.features;
     StageClock clock(d.stage_time, options.stop);
-    clock.run(Stage::MeshBuilding, [&] { d.normals = surface_normals(mesh, d.connectivity); });
+    clock.run(Stage::MeshBuilding, [&] {
+        d.normals = surface_normals_after_moves(mesh, d.connectivity, input.normals, moved);
+    });
     classify_and_fit_normals(mesh, d, options, clock);
     return d;
 }
@@ -542,7 +545,8 @@ private:
         for (int round = 0; round < options_.max_harm_rounds && moves.moved_count > 0; ++round) {
             ++report_.move_rounds;
             const Mesh moved = moved_mesh(mesh, moves);
-            Detection detection = detect_bands_after_moves(moved, segmented, options_);
+            Detection detection =
+                detect_bands_after_moves(moved, segmented, surface, moves.moved, options_);
             add_times(detection.stage_time);
             const HarmReference reference{surface, moves};
             BandRestoration restored = restore_detected(moved, detection, duplicates, &reference);

@@ -6,6 +6,7 @@
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "resharp/mesh/connectivity.h"
@@ -96,12 +97,14 @@ struct Detection {
 ///         out of range.
 Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const RestoreOptions& options);
 
-/// detect_bands() on `mesh`, whose vertices moved from those of the mesh `before` was found on
-/// but whose faces are the same (near-surface restoration): the segmentations carried over (a
-/// patch is a set of faces; moving vertices within their cells keeps them), the normals,
-/// classification and feature normals made anew on `mesh`.
+/// detect_bands() on `mesh`, the input with the vertices flagged in `moved` (#V) moved, its
+/// faces the same (near-surface restoration): the segmentations carried over from `before` (a
+/// patch is a set of faces; moving vertices within their cells keeps them), the normals made
+/// anew where the moves change them (the rest are the input's), classification and feature
+/// normals made anew on `mesh`.
 /// \throws as detect_bands().
 Detection detect_bands_after_moves(const Mesh& mesh, const Detection& before,
+                                   const InputSurface& input, std::span<const std::uint8_t> moved,
                                    const RestoreOptions& options);
 
 /// The second half of restore(): points placed on the bands (eq. 5.2-5.5), then rounds of
