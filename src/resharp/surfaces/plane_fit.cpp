@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "resharp/surfaces/local_quadric.h"
+
 namespace resharp {
 
 std::optional<PlaneFit> fit_plane(std::span<const Vec3> points, const Vec3& facing) {
@@ -35,8 +37,8 @@ std::optional<HeightFit> fit_height_quadric(std::span<const Vec3> points, const 
     constexpr std::size_t kMinPoints = 10;  // six unknowns, with some to spare against noise
     if (points.size() < kMinPoints) return std::nullopt;
     const Vec3 foot = plane.projection(at);
-    const Vec3 t1 = plane.normal.unitOrthogonal();
-    const Vec3 t2 = plane.normal.cross(t1);
+    const Eigen::Matrix3d frame = tangent_frame(plane.normal);
+    const Vec3 t1 = frame.col(0), t2 = frame.col(1);
     const Eigen::Index n = static_cast<Eigen::Index>(points.size());
     Eigen::MatrixXd design(n, 6);
     Eigen::VectorXd height(n);
