@@ -15,8 +15,9 @@ struct TwoMeansResult {
 };
 
 /// Lloyd iterations from the given initial centres until both centres move less than
-/// `tolerance` (eq. 3.2) or `max_iterations` is reached. Sequential sums keep the result
-/// bit-identical from run to run.
+/// `tolerance` (eq. 3.2) or `max_iterations` is reached. Each step assigns the points in
+/// parallel blocks fixed by their count and adds the blocks' sums in order, so the result is
+/// bit-identical from run to run and on any number of threads.
 TwoMeansResult two_means(const std::vector<Eigen::Vector2d>& points,
                          std::array<Eigen::Vector2d, 2> initial_centres, double tolerance,
                          int max_iterations);
