@@ -9,12 +9,33 @@
 #include <numbers>
 
 namespace resharp::test {
+namespace {
+
+/// This process's folder of scratch folders, one per test.
+std::filesystem::path process_scratch_root() {
+    return std::filesystem::temp_directory_path() /
+           ("resharp_io_tests_" + std::to_string(::getpid()));
+}
+
+/// Removes the process's scratch folders when its tests end, so that test runs leave nothing
+/// behind in the temporary folder.
+class RemoveScratch : public ::testing::Environment {
+public:
+    void TearDown() override {
+        std::error_code ignored;  // a folder another tool holds open is not a test failure
+        std::filesystem::remove_all(process_scratch_root(), ignored);
+    }
+};
+
+[[maybe_unused]] const ::testing::Environment* const kRemoveScratch =
+    ::testing::AddGlobalTestEnvironment(new RemoveScratch);
+
+}  // namespace
 
 std::filesystem::path scratch_dir() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                      ("resharp_io_tests_" + std::to_string(::getpid())) /
-                                      (std::string(info->test_suite_name()) + "." + info->name());
+    const std::filesystem::path dir =
+        process_scratch_root() / (std::string(info->test_suite_name()) + "." + info->name());
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
