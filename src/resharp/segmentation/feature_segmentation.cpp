@@ -74,11 +74,11 @@ struct Growth {
 /// Breadth-first growth of region `id` from `seed` over the faces open(f) holds for, across
 /// manifold edges whose faces' normals differ by less than the angle; past `curved_limit` faces
 /// only into faces within the angle of the seed (0: no limit). Leaves the region's faces in
-/// `taken`, in the order taken. In sweep order each face's half-edges are crossed in geometric
-/// order, so the region does not depend on how the mesh numbers its faces or corners.
+/// `taken`, in the order taken. Until the limit each face's half-edges are crossed in geometric
+/// (sweep) order, so the region does not depend on how the mesh numbers its faces or corners.
 template <class Open>
-void grow_from(const Growth& g, Index seed, Open&& open, Index id, bool sweep_order,
-               std::vector<Index>& region, std::vector<Index>& taken) {
+void grow_from(const Growth& g, Index seed, Open&& open, Index id, std::vector<Index>& region,
+               std::vector<Index>& taken) {
     taken.assign(1, seed);
     region[seed] = id;
     // Bound: a face joins a region, and `taken`, once.
@@ -86,7 +86,7 @@ void grow_from(const Growth& g, Index seed, Open&& open, Index id, bool sweep_or
         const Index u = taken[head];
         // Past the limit the region is every face reachable under both tests from those taken
         // so far, whatever the order: only the first curved_limit faces depend on it.
-        const bool in_order = sweep_order && taken.size() < g.curved_limit;
+        const bool in_order = taken.size() < g.curved_limit;
         const std::array<Index, 3> halfedges =
             in_order ? halfedges_in_sweep_order(g.mesh, u)
                      : std::array<Index, 3>{3 * u, 3 * u + 1, 3 * u + 2};
@@ -118,9 +118,45 @@ Index regrow_in_sweep_order(const Growth& g, std::span<const Index> component, I
     Index next = 0;
     // Bound: every seed starts a region that takes at least itself, so at most |component|.
     for (Index seed = seeds.next(open); seed != kNoIndex; seed = seeds.next(open)) {
-        grow_from(g, seed, open, next++, true, region, taken);
+        grow_from(g, seed, open, next++, region, taken);
     }
     return next;
+}
+
+/// Per face, bit k set where growth without a limit crosses its half-edge k: a manifold edge
+/// whose faces' normals differ by less than the angle (grow_from()'s test; the dot product is
+/// the same bits either way round, so the links are symmetric). Taken in parallel: these tests
+/// are most of the first pass's work, and the pass then only follows links.
+std::vector<std::uint8_t> growth_links(const Growth& g) {
+    std::vector<std::uint8_t> links(g.normals.size(), 0);
+    for_each_index(links.size(), 4096, [&](std::size_t f) {
+        for (int k = 0; k < 3; ++k) {
+            const Index twin = g.c.twin[3 * f + k];
+            if (twin != kNoIndex && g.normals[f].dot(g.normals[face_of(twin)]) > g.min_cosine) {
+                links[f] |= static_cast<std::uint8_t>(1u << k);
+            }
+        }
+    });
+    return links;
+}
+
+/// grow_from() without a limit, on the links: the component `id` of `seed`, its faces in
+/// `taken` in the order grow_from() takes them (half-edges 0, 1, 2 of each face in turn).
+void take_component(const Connectivity& c, const std::vector<std::uint8_t>& links, Index seed,
+                    Index id, std::vector<Index>& region, std::vector<Index>& taken) {
+    taken.assign(1, seed);
+    region[seed] = id;
+    // Bound: a face joins the component, and `taken`, once.
+    for (std::size_t head = 0; head < taken.size(); ++head) {
+        const Index u = taken[head];
+        for (int k = 0; k < 3; ++k) {
+            if (!(links[u] >> k & 1u)) continue;
+            const Index v = face_of(c.twin[3 * u + k]);
+            if (region[v] != kNoIndex) continue;
+            region[v] = id;
+            taken.push_back(v);
+        }
+    }
 }
 
 /// A component grown again (regrow_in_sweep_order()): its number among all components, its
@@ -151,11 +187,11 @@ std::vector<Index> grow_regions(const Mesh& mesh, const Connectivity& c,
     std::vector<Index> component;
     std::vector<Regrown> regrown;
     Index components = 0;
-    auto open = [&](Index f) { return region[f] == kNoIndex; };
+    const std::vector<std::uint8_t> links = growth_links(unlimited);
     // Bound: each seed takes at least itself, so at most #F components.
     for (Index seed = 0; seed < normals.size(); ++seed) {
         if (region[seed] != kNoIndex) continue;
-        grow_from(unlimited, seed, open, components, false, region, component);
+        take_component(c, links, seed, components, region, component);
         if (curved_limit != 0 && component.size() > curved_limit &&
             !normals_within_angle(normals, component, max_angle_deg)) {
             regrown.push_back({components, component});
