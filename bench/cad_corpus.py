@@ -53,14 +53,25 @@ def measure(exe, solid, scratch, name, cells, simulate_flags=(), in_process=Fals
     `in_process`: restored by `resharp evaluate --restore` (the same restore() with default
     options, the same output), which then also tells why sharp edges are missed
     (cad.crease_losses)."""
-    mesh = os.path.join(scratch, name + ".ply")
-    oracle = os.path.join(scratch, name + "_oracle.ply")
+    mesh, oracle = mesh_files(scratch, name)
+    run([exe, "simulate", "--solid", solid, "-o", mesh, "--oracle", oracle, "-q", "--cells",
+         str(cells)] + list(simulate_flags))
+    return score(exe, solid, scratch, name, cells, in_process)
+
+
+def mesh_files(scratch, name):
+    """The mesh and its oracle of run `name`."""
+    return os.path.join(scratch, name + ".ply"), os.path.join(scratch, name + "_oracle.ply")
+
+
+def score(exe, solid, scratch, name, cells, in_process=False):
+    """The mesh of run `name` (mesh_files(), on the grid of `cells` cells) restored and scored
+    against `solid`; `in_process` as for measure()."""
+    mesh, oracle = mesh_files(scratch, name)
     restored = os.path.join(scratch, name + "_restored.ply")
     report = os.path.join(scratch, name + "_report.json")
     scores = os.path.join(scratch, name + "_evaluate.json")
     grid = ["--cells", str(cells)]
-    run([exe, "simulate", "--solid", solid, "-o", mesh, "--oracle", oracle, "-q"] + grid +
-        list(simulate_flags))
     if not in_process:
         run([exe, "restore", mesh, "-o", restored, "--report", report, "-q"])
     run([exe, "evaluate", "--input", mesh, "--oracle", oracle, "--solid", solid, "--output",

@@ -2,14 +2,17 @@
 """Measures resharp on near-surface meshes (issue 14) and writes one section per mesher of docs/results.md.
 
     python3 bench/mesher_results.py [--build build] [--scratch /tmp/resharp-meshers]
-                                    [--meshers surface-nets midpoint mc] [--parts mech ...]
+                                    [--meshers surface-nets midpoint mc openvdb]
+                                    [--openvdb-fine 4] [--parts mech ...]
                                     [--cad-parts NAME ...] [--cells 100]
                                     [--orientations aligned rotated] [--reuse] [--raw FILE]
                                     [--from-raw FILE] [--output docs/results.md]
 
-For each mesher (`resharp simulate --mesher`), each benchmark part (examples/<part>/job.json, at
-the job's pitch) and each CAD part (examples/cad/<part>.json at --cells cells along its longest
-side, aligned and turned off the grid axes as bench/cad_corpus.py turns it) is meshed, restored by
+For each mesher (`resharp simulate --mesher`, or openvdb: OpenVDB's volumeToMesh by
+bench/openvdb_mesh.cpp, build target resharp_openvdb_mesh, of a mesh the simulator samples on a
+finer grid), each benchmark part (examples/<part>/job.json, at the job's pitch) and each CAD part
+(examples/cad/<part>.json at --cells cells along its longest side, aligned and turned off the
+grid axes as bench/cad_corpus.py turns it) is meshed, restored by
 `resharp restore` with default options and scored by `resharp evaluate` against its exact surface,
 input and restored side by side, with the goals of issue 14: Edge F-score >= 0.85, Edge Chamfer
 Distance <= 1/3 of the input's, Chamfer distance and normal consistency no worse than the input's,
@@ -23,8 +26,9 @@ import datetime
 import json
 import os
 import sys
+import time
 
-from cad_corpus import PLANE_ONLY, measure, solid_file
+from cad_corpus import PLANE_ONLY, measure, mesh_files, score, solid_file
 from results import (MESHER_SECTIONS, PARTS, git_head, load, machine, mesher_markers, run,
                      write_section)
 
@@ -32,6 +36,12 @@ from results import (MESHER_SECTIONS, PARTS, git_head, load, machine, mesher_mar
 # and three meshers, would take about half an hour on two cores).
 CURVED = ["spool", "sphere_part", "cone_part"]
 TAU_DIAGONALS = 1e-3  # Edge F-score tolerance: 0.1 % of the bounding-box diagonal
+# OpenVDB meshes the exact-crossing (mc) mesh the simulator samples at pitch h / OPENVDB_FINE, at
+# voxel size h (--openvdb-fine). Finer is truer to the exact surface but costs: at h / 4 mech's
+# fine mesh has 5.5 million triangles and OpenVDB's meshToLevelSet takes about a minute on two
+# cores; at h / 8 it would have four times as many.
+OPENVDB_FINE = 4
+OPENVDB = "openvdb"
 # (key, label, higher is better, style)
 MEASURES = [("chamfer", "Chamfer", False, "length"), ("nc", "NC", True, "nc"),
             ("ecd", "ECD", False, "length"), ("ef1", "Edge F-score", True, "score")]
@@ -43,17 +53,36 @@ def job_diagonal_and_pitch(job_path):
     return sum((b - a) ** 2 for a, b in zip(low, high)) ** 0.5, job.get("pitch", 0.5)
 
 
-def measure_job(exe, root, scratch, part, mesher, reuse=False):
+def openvdb_mesh(exe, tool, scratch, name, sample, grid):
+    """Writes mesh_files(scratch, name): OpenVDB's dual mesh (bench/openvdb_mesh.cpp) at the
+    simulator's pitch h of a part and its oracle. `sample`: the simulate arguments that give the
+    part (a job, or --solid FILE) on a grid finer than h, meshed with exact crossings;
+    `grid`: the tool's arguments that put its voxel centres on the nodes of the part's grid of
+    pitch h, so that its cells are the other meshers' cells."""
+    mesh, oracle = mesh_files(scratch, name)
+    fine, fine_oracle = mesh_files(scratch, name + "_fine")
+    run([exe, "simulate"] + sample + ["--mesher", "mc", "-o", fine, "--oracle", fine_oracle, "-q"])
+    run([tool, fine, "-o", mesh, "--input-oracle", fine_oracle, "--oracle", oracle] + grid)
+    for path in (fine, fine_oracle):  # hundreds of MB for a benchmark part; nothing reads them
+        os.remove(path)
+
+
+def measure_job(exe, tool, root, scratch, part, mesher, reuse=False, fine=OPENVDB_FINE):
     """A benchmark part: distances and edge measures against the milled surface, in diagonals
     (the job's stock box) as the CAD rows; sharp edges by a 30 degree dihedral on both sides.
-    `reuse`: take the scores of an earlier run in `scratch` if there are any."""
+    `reuse`: take the scores of an earlier run in `scratch` if there are any; `fine`: openvdb's
+    fine mesh at the job's pitch / fine."""
     job = os.path.join(root, "examples", part, "job.json")
     name = f"{part}_{mesher}"
-    mesh, oracle = (os.path.join(scratch, name + s) for s in (".ply", "_oracle.ply"))
+    mesh, oracle = mesh_files(scratch, name)
     restored, scores = (os.path.join(scratch, name + s) for s in ("_restored.ply", ".json"))
     diagonal, pitch = job_diagonal_and_pitch(job)
     if not (reuse and os.path.exists(scores)):
-        run([exe, "simulate", job, "--mesher", mesher, "-o", mesh, "--oracle", oracle, "-q"])
+        if mesher == OPENVDB:
+            openvdb_mesh(exe, tool, scratch, name, [job, "--pitch", str(pitch / fine)],
+                         ["--job", job])
+        else:
+            run([exe, "simulate", job, "--mesher", mesher, "-o", mesh, "--oracle", oracle, "-q"])
         run([exe, "restore", mesh, "-o", restored, "-q"])
         run([exe, "evaluate", "--input", mesh, "--oracle", oracle, "--job", job, "--output",
              restored, "--json", scores, "--edge-f1-threshold",
@@ -73,8 +102,14 @@ def measure_job(exe, root, scratch, part, mesher, reuse=False):
             "self_intersections": e["self_intersections"]}
 
 
-def measure_cad(exe, solid, scratch, name, cells, mesher):
-    r = measure(exe, solid, scratch, name, cells, ["--mesher", mesher], in_process=True)
+def measure_cad(exe, tool, solid, scratch, name, cells, mesher, fine=OPENVDB_FINE):
+    if mesher == OPENVDB:
+        openvdb_mesh(exe, tool, scratch, name,
+                     ["--solid", solid, "--cells", str(cells * fine)],
+                     ["--solid", solid, "--cells", str(cells)])
+        r = score(exe, solid, scratch, name, cells, in_process=True)
+    else:
+        r = measure(exe, solid, scratch, name, cells, ["--mesher", mesher], in_process=True)
     cad = r["cad"]
 
     def side(s):
@@ -183,22 +218,56 @@ def summary(mesher, results):
             f"over {len(runs)} rows; rows meeting every goal: {met} of {len(runs)}.")
 
 
+def meshed_by(mesher, info):
+    """How the section's meshes were made: the start of its first paragraph."""
+    orientations = ("*aligned* and *rotated* as `bench/cad_corpus.py` turns them")
+    if mesher != OPENVDB:
+        return (f"Each part is meshed by `resharp simulate --mesher {mesher}` (benchmark parts: "
+                "`examples/<part>/job.json` at the job's pitch h; CAD parts: `--solid "
+                f"examples/cad/<part>.json --cells {info['cells']}`, {orientations}).")
+    fine = info["openvdb_fine"]
+    return ("Each part is meshed by OpenVDB as its users mesh a solid: `meshToLevelSet` of a "
+            "closed mesh at voxel size h, then `volumeToMesh` at adaptivity 0, quads split "
+            "along the shorter diagonal (`bench/openvdb_mesh.cpp`, `extras/openvdb_mesher.h`). "
+            "h and the voxel centres are those of the other meshers' sections: the nodes of the "
+            "grid `resharp simulate` samples the part on (benchmark parts: "
+            "`examples/<part>/job.json` at the job's pitch h; CAD parts: `--solid "
+            f"examples/cad/<part>.json --cells {info['cells']}`, {orientations}), so a row meets "
+            "the same cells as theirs. The closed mesh is the part sampled by `resharp simulate "
+            f"--mesher mc` on a grid {fine} times finer (`--pitch` h/{fine}, `--cells "
+            f"{fine * info['cells']}`), its vertices on the exact surface (`--openvdb-fine`; finer "
+            "costs time: mech's fine mesh has 5.5 million triangles at h/4, whose level set "
+            "takes OpenVDB about a minute here, and four times as many at h/8). The "
+            "oracle `resharp evaluate` reads for the dual mesh takes for each vertex the fine "
+            "mesh's vertex nearest it and the foot on its tangent plane (docs/oracle.md's rule, "
+            "over the fine grid's exact crossings instead of the vertex's cell's).")
+
+
+def mesher_title(mesher):
+    return "OpenVDB's `volumeToMesh`" if mesher == OPENVDB else f"`--mesher {mesher}`"
+
+
+def took(mesher, info):
+    """The run time of the section's rows, where the run recorded it."""
+    seconds = info.get("seconds", {}).get(mesher)
+    if seconds is None:
+        return ""
+    return f" The rows took {seconds / 60:.1f} minutes to make and score."
+
+
 def section(mesher, raw):
     info = raw["run"]
     begin, end = mesher_markers(mesher)
     chamfer_goal = "<= 1/4 of" if mesher == "midpoint" else "no worse than"
     return "\n".join([
         begin,
-        f"## Near-surface meshes (issue 14): `--mesher {mesher}`, input and restored",
+        f"## Near-surface meshes (issue 14): {mesher_title(mesher)}, input and restored",
         "",
         f"Generated by `python3 bench/mesher_results.py` on {info['date']} at commit "
         f"{info['commit']}; machine: {info['machine']}.",
         "",
-        f"Each part is meshed by `resharp simulate --mesher {mesher}` (benchmark parts: "
-        "`examples/<part>/job.json` at the job's pitch; CAD parts: `--solid "
-        f"examples/cad/<part>.json --cells {info['cells']}`, *aligned* and *rotated* as "
-        "`bench/cad_corpus.py` turns them), restored by `resharp restore` with default options "
-        "(CAD parts: the same restore() run by `resharp evaluate --restore`) and scored by "
+        meshed_by(mesher, info) + " Each mesh is restored by `resharp restore` with default "
+        "options (CAD parts: the same restore() run by `resharp evaluate --restore`) and scored by "
         "`resharp evaluate` (`--job` or `--solid`). Each cell reads *input -> "
         "restored*. Distances in bounding-box diagonals (the stock box for benchmark parts); "
         "*Chamfer*: mean distance both ways to the exact surface; *NC*: normal consistency; "
@@ -221,7 +290,7 @@ def section(mesher, raw):
         "",
         info.get("note", ""),
         "",
-        summary(mesher, raw["results"][mesher]),
+        summary(mesher, raw["results"][mesher]) + took(mesher, info),
         "",
         mesher_table(mesher, raw["results"][mesher]),
         "",
@@ -251,24 +320,35 @@ def section(mesher, raw):
 
 def run_all(args, root):
     exe = os.path.join(args.build, "resharp")
+    tool = os.path.join(args.build, "bench", "resharp_openvdb_mesh")
+    if OPENVDB in args.meshers and not os.path.exists(tool):
+        missing = f"{tool} is missing: build the target resharp_openvdb_mesh (needs OpenVDB)"
+        if not args.default_meshers:
+            sys.exit(missing)
+        # Without OpenVDB the other meshers' sections can still be made; openvdb's is left.
+        print(missing + "; its section is left as it is", file=sys.stderr)
+        args.meshers = [m for m in args.meshers if m != OPENVDB]
     os.makedirs(args.scratch, exist_ok=True)
     commit = git_head(root)  # before the runs: the tree may move while they run
-    results = {}
+    results, seconds = {}, {}
     for mesher in args.meshers:
+        start = time.monotonic()
         by_part = {}
         for part in args.parts:
-            by_part[part] = {"job": measure_job(exe, root, args.scratch, part, mesher,
-                                                args.reuse)}
+            by_part[part] = {"job": measure_job(exe, tool, root, args.scratch, part, mesher,
+                                                args.reuse, args.openvdb_fine)}
         for part in args.cad_parts:
             by_part[part] = {}
             for axes in args.orientations:
                 solid = solid_file(root, args.scratch, part, axes == "rotated")
                 name = f"{part}_{axes}_{args.cells}_{mesher}"
-                by_part[part][axes] = measure_cad(exe, solid, args.scratch, name, args.cells,
-                                                  mesher)
+                by_part[part][axes] = measure_cad(exe, tool, solid, args.scratch, name,
+                                                  args.cells, mesher, args.openvdb_fine)
         results[mesher] = by_part
+        seconds[mesher] = time.monotonic() - start
     return {"run": {"date": datetime.date.today().isoformat(), "machine": machine(),
-                    "commit": commit, "cells": args.cells,
+                    "commit": commit, "cells": args.cells, "seconds": seconds,
+                    "openvdb_fine": args.openvdb_fine,
                     "cad_parts_plane": [p for p in args.cad_parts if p in PLANE_ONLY],
                     "cad_parts_curved": [p for p in args.cad_parts if p not in PLANE_ONLY]},
             "results": results}
@@ -279,11 +359,13 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default=os.path.join(root, "build"))
     parser.add_argument("--scratch", default="/tmp/resharp-meshers")
-    parser.add_argument("--meshers", nargs="*", default=MESHER_SECTIONS,
-                        choices=MESHER_SECTIONS)
+    parser.add_argument("--meshers", nargs="*", choices=MESHER_SECTIONS,
+                        help="default: all, openvdb where its tool is built")
     parser.add_argument("--parts", nargs="*", default=PARTS)
     parser.add_argument("--cad-parts", nargs="*", default=PLANE_ONLY + CURVED)
     parser.add_argument("--cells", type=int, default=100)
+    parser.add_argument("--openvdb-fine", type=int, default=OPENVDB_FINE,
+                        help="openvdb: the fine mesh OpenVDB meshes is sampled at pitch h / this")
     parser.add_argument("--orientations", nargs="*", default=["aligned", "rotated"],
                         choices=["aligned", "rotated"])
     parser.add_argument("--output", default=os.path.join(root, "docs", "results.md"))
@@ -293,6 +375,9 @@ def main():
     parser.add_argument("--raw", help="also write every result here as JSON")
     parser.add_argument("--from-raw", help="run nothing: write the sections from a --raw file")
     args = parser.parse_args()
+    args.default_meshers = args.meshers is None
+    if args.default_meshers:
+        args.meshers = MESHER_SECTIONS
     raw = load(args.from_raw) if args.from_raw else run_all(args, root)
     if args.note:
         raw["run"]["note"] = args.note

@@ -48,8 +48,9 @@ CAD_BEGIN = "<!-- cad-corpus: begin (bench/cad_corpus.py writes this section) --
 CAD_END = "<!-- cad-corpus: end -->"
 
 
-# The sections bench/mesher_results.py writes, one per mesher; kept as the CAD corpus section.
-MESHER_SECTIONS = ["surface-nets", "midpoint", "mc"]
+# The sections bench/mesher_results.py writes, one per mesher (openvdb: OpenVDB's volumeToMesh,
+# bench/openvdb_mesh.cpp); kept as the CAD corpus section.
+MESHER_SECTIONS = ["surface-nets", "midpoint", "mc", "openvdb"]
 
 
 def mesher_markers(mesher):

@@ -1,15 +1,18 @@
-// OpenVDB's volumeToMesh (support/openvdb_mesher.h), a mesher the project did not write: its
+// OpenVDB's volumeToMesh (extras/openvdb_mesher.h), a mesher the project did not write: its
 // vertices, one per voxel at the mean of its edge crossings, come out Near, with about the voxel
 // size as the pitch.
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
 #include <string>
 
+#include "openvdb_mesher.h"
+#include "resharp/mesh/connectivity.h"
+#include "resharp/mesh/diagnostics.h"
 #include "resharp/near/vertex_placement.h"
 #include "support/grid_shapes.h"
-#include "support/openvdb_mesher.h"
 
 namespace resharp {
 namespace {
@@ -26,13 +29,29 @@ TEST(OpenVdbPlacement, DualMeshesAreNear) {
     };
     for (const auto& [name, sample] : solids) {
         SCOPED_TRACE(name);
-        const Mesh dual = test::openvdb_dual_mesh(sample(kPitch / kFine).mesh, kPitch);
+        const Mesh dual = extras::openvdb_dual_mesh(sample(kPitch / kFine).mesh, kPitch);
         const PlacementEstimate e = estimate_vertex_placement(dual);
         EXPECT_EQ(e.placement, VertexPlacement::Near) << e.reason;
         // On these small solids (16 to 30 voxels across) the pitch comes out at 0.5 for three
         // and 3.5 % off for the box, not to float precision as on the simulator's meshes: a
         // pitch that far off still fits every triangle of a part this small.
         EXPECT_NEAR(e.pitch / kPitch, 1.0, 0.05) << e.reason;
+    }
+}
+
+// The voxel centres lie where the caller puts them (origin + k * pitch), as bench/openvdb_mesh.cpp
+// relies on to mesh on the simulator's grid: the grid restore() finds in the dual mesh has its
+// nodes there. Off the default nodes the mesh stays closed and manifold.
+TEST(OpenVdbPlacement, VoxelCentresFollowTheOrigin) {
+    const Vec3 origin(0.11, 0.23, 0.37);  // off the block's faces and off the default nodes
+    const Mesh dual =
+        extras::openvdb_dual_mesh(test::sampled_l_block(kPitch / kFine).mesh, kPitch, origin);
+    EXPECT_TRUE(diagnose(dual, build_connectivity(dual)).is_clean_closed_manifold());
+    const PlacementEstimate e = estimate_vertex_placement(dual);
+    ASSERT_TRUE(e.grid.has_value()) << e.reason;
+    for (int a = 0; a < 3; ++a) {
+        const double steps = (e.grid->origin[a] - origin[a]) / e.grid->pitch;
+        EXPECT_NEAR(steps, std::round(steps), 1e-3) << "axis " << a << ": " << e.reason;
     }
 }
 

@@ -1,4 +1,4 @@
-// OpenVDB as a mesher the project did not write (support/openvdb_mesher.h): solids sampled by the
+// OpenVDB as a mesher the project did not write (extras/openvdb_mesher.h): solids sampled by the
 // simulator on a fine grid are meshed by volumeToMesh at adaptivity 0, then restored; the
 // restoration must finish and do no harm (issue 11's criteria).
 
@@ -7,12 +7,12 @@
 #include <functional>
 #include <string>
 
+#include "openvdb_mesher.h"
 #include "resharp/mesh/diagnostics.h"
 #include "resharp/mesh/geometry.h"
 #include "resharp/pipeline/restore.h"
 #include "support/grid_shapes.h"
 #include "support/invariants.h"
-#include "support/openvdb_mesher.h"
 
 namespace resharp {
 namespace {
@@ -46,7 +46,7 @@ TEST(OpenVdbMesher, SimulatedSolidsRestoreWithoutHarm) {
     for (const Solid& solid : solids) {
         SCOPED_TRACE(solid.name);
         const test::SampledShape fine = solid.sample(kPitch / kFine);
-        const Mesh input = test::openvdb_dual_mesh(fine.mesh, kPitch);
+        const Mesh input = extras::openvdb_dual_mesh(fine.mesh, kPitch);
         ASSERT_GT(input.face_count(), 100u);
         ASSERT_GT(six_volume(input), 0.0);  // outward, as restore() expects
         const RestoreResult r = restore(input, options);

@@ -1,4 +1,4 @@
-#include "support/openvdb_mesher.h"
+#include "openvdb_mesher.h"
 
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/MeshToVolume.h>
@@ -6,17 +6,20 @@
 
 #include <vector>
 
-namespace resharp::test {
+namespace resharp::extras {
 namespace {
 
-openvdb::FloatGrid::Ptr level_set(const Mesh& mesh, double pitch) {
+openvdb::FloatGrid::Ptr level_set(const Mesh& mesh, double pitch, const Vec3& origin) {
     std::vector<openvdb::Vec3s> points;
     points.reserve(mesh.vertex_count());
     for (const Vec3& p : mesh.positions) points.emplace_back(p.x(), p.y(), p.z());
     std::vector<openvdb::Vec3I> triangles;
     triangles.reserve(mesh.face_count());
     for (const Triangle& t : mesh.triangles) triangles.emplace_back(t[0], t[1], t[2]);
+    // Index (i, j, k) at origin + (i, j, k) * pitch: voxel centres, the samples volumeToMesh
+    // meshes between, on the grid the caller names.
     const auto transform = openvdb::math::Transform::createLinearTransform(pitch);
+    transform->postTranslate(openvdb::Vec3d(origin.x(), origin.y(), origin.z()));
     return openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(*transform, points, triangles);
 }
 
@@ -45,9 +48,9 @@ Mesh dual_mesh(const openvdb::FloatGrid& grid) {
 
 }  // namespace
 
-Mesh openvdb_dual_mesh(const Mesh& mesh, double pitch) {
+Mesh openvdb_dual_mesh(const Mesh& mesh, double pitch, const Vec3& origin) {
     openvdb::initialize();  // idempotent
-    return dual_mesh(*level_set(mesh, pitch));
+    return dual_mesh(*level_set(mesh, pitch, origin));
 }
 
-}  // namespace resharp::test
+}  // namespace resharp::extras
