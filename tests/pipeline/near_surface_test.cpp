@@ -85,6 +85,33 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{SmallPart::TiltedWedge, sim::Mesher::SurfaceNets, VertexMode::Near},
                       Case{SmallPart::TiltedWedge, sim::Mesher::Midpoint, VertexMode::Midpoint}));
 
+/// Midpoints of a face off the grid axes scatter about it by up to half a pitch along their
+/// edges, evenly: over the whole face they fix its plane, and every vertex goes onto it.
+TEST(NearSurface, MidpointVerticesOfSlantedFacesLandOnTheirPlanes) {
+    const Case c{SmallPart::TiltedWedge, sim::Mesher::Midpoint, VertexMode::Midpoint};
+    const Mesh input = test::small_part(c.part, 0.5, c.mesher);
+    const sim::CsgSolid solid = test::small_part_solid(c.part);
+    const RestoreResult r = restore(input, near_options(c));
+    std::vector<double> before, after;
+    for (std::size_t v = 0; v < input.vertex_count(); ++v) {
+        before.push_back(test::distance_along_lines(solid, input.positions[v]));
+        after.push_back(test::distance_along_lines(solid, r.mesh.positions[v]));
+    }
+    const auto quantile = [](std::vector<double> x, double q) {
+        const auto at =
+            x.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(x.size() - 1));
+        std::nth_element(x.begin(), at, x.end());
+        return *at;
+    };
+    // Midpoints: about a quarter pitch off at the median. Moved: within a few hundredths of a
+    // pitch, the planes' fitting error on this small part, for all but the vertices along the
+    // edges that the segmentation leaves without a patch where a band is wide. (With planes
+    // fitted over three rings only: 0.016 mm at the median, 0.070 mm at the 80th percentile.)
+    EXPECT_GT(quantile(before, 0.5), 0.05) << quantile(before, 0.5);
+    EXPECT_LT(quantile(after, 0.5), 0.015) << quantile(after, 0.5);
+    EXPECT_LT(quantile(after, 0.8), 0.035) << quantile(after, 0.8);
+}
+
 TEST(NearSurface, ExactModeMovesNothing) {
     const Mesh input = test::small_part(SmallPart::PocketedBlock, 0.5, sim::Mesher::SurfaceNets);
     RestoreOptions o =

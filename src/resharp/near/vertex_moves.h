@@ -89,7 +89,10 @@ struct MoveRule {
 /// three patches moves onto where their planes meet (the sharp edge or corner): the point of it
 /// nearest the vertex within its input cell, or, where it misses that cell, the cell's point
 /// nearest it. Midpoint: every vertex with a plane of its own
-/// patch (or, Neighbourhood, around it) moves along its input grid edge onto it, within the edge.
+/// patch (or, Neighbourhood, around it) moves along its input grid edge onto it, within the edge;
+/// a patch whose vertices off the bands scatter about one plane as midpoints of one face's
+/// crossings do has that plane, fitted to all of them, and a vertex of no patch among such
+/// patches goes where its grid edge meets the boundary their planes make.
 /// Exact: nothing moves. A vertex without a plane keeps its current position. Each vertex is
 /// decided alone, from the inputs only: the same on any number of threads. The result counts
 /// moves from the input positions.

@@ -52,6 +52,11 @@ std::string_view stage_name(Stage stage) {
 
 namespace {
 
+/// Midpoint meshes: rounds of segmenting the mesh moved so far and moving its vertices onto
+/// their patches' planes (Pipeline::plan_moves()). A third changed stepped_block turned by 0.01
+/// in Edge F-score.
+constexpr int kMidpointPatchRounds = 2;
+
 void validate_mesh(const Mesh& mesh) {
     if (mesh.triangles.empty()) throw InvalidInput("the mesh has no triangles");
     for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
@@ -496,8 +501,8 @@ private:
 
     /// Where the vertices go (near/vertex_moves.h). Near: band vertices onto the planes of the
     /// patches found. Midpoint: first every vertex onto the plane of its neighbourhood, which
-    /// takes the stairs out of slanted faces, then, on the bands found on that mesh, onto the
-    /// planes of its patches.
+    /// takes the stairs out of slanted faces, then, twice, onto the planes of the patches found
+    /// on the mesh so far (kMidpointPatchRounds).
     /// `smoothed` receives the detection made on the way (midpoint), which the moved mesh's
     /// segmentation is then taken from.
     VertexMoves plan_moves(const InputSurface& surface, const Detection& input,
@@ -518,15 +523,22 @@ private:
         clock.run(Stage::VertexMoves, [&] {
             moves = plan_vertex_moves(surface, from, {}, input.bands, rule, options);
         });
-        const Mesh stairless = moved_mesh(surface.mesh, moves);
-        smoothed = detect_bands(stairless, Connectivity(input.connectivity), options_);
-        add_times(smoothed->stage_time);
+        // The stairless mesh segments into the faces, but near their edges, where the fits
+        // straddle two faces, into bands wider than the true ones; with its patches' vertices
+        // on their whole planes it segments as an exact mesh does, and its patches reach the
+        // edges (stepped_block turned, 100 cells: Edge F-score 0.10 -> 0.50).
+        Mesh current = moved_mesh(surface.mesh, moves);
         rule.scope = FitScope::Patches;
-        clock.run(Stage::VertexMoves, [&] {
-            moves =
-                plan_vertex_moves(smoothed->surface(stairless), from,
-                                  smoothed->features.vertex_patch, smoothed->bands, rule, options);
-        });
+        for (int round = 0; round < kMidpointPatchRounds; ++round) {
+            smoothed = detect_bands(current, Connectivity(input.connectivity), options_);
+            add_times(smoothed->stage_time);
+            clock.run(Stage::VertexMoves, [&] {
+                moves = plan_vertex_moves(smoothed->surface(current), from,
+                                          smoothed->features.vertex_patch, smoothed->bands, rule,
+                                          options);
+            });
+            current = moved_mesh(surface.mesh, moves);
+        }
         return moves;
     }
 
