@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <numbers>
 #include <optional>
 
@@ -39,6 +40,9 @@ struct Scratch {
     std::vector<Index> reached_from;
     int rings = 0;  ///< how many rings `reached` holds, all of each (0: none, or cut short)
     std::size_t last_ring_begin = 0;  ///< where the outermost of them begins in `reached`
+    /// How many of `reached` lie within the fit rings: the vertex's own plane is fitted to
+    /// these, and so is what is compared with it, even after the others are gathered farther.
+    std::size_t fit_reached = 0;
 };
 
 /// Collects into scratch.reached v and the vertices within `rings` rings of it, ring by ring,
@@ -102,8 +106,7 @@ public:
         if (rule_.scope == FitScope::Patches && is_between_patches(v))
             return point_on_junction(v, scratch);
         if (rule_.scope == FitScope::Patches && !may_move(v)) return std::nullopt;
-        gather_rings(current_.mesh, current_.connectivity, v, options_.fit_rings, kMaxGathered,
-                     scratch);
+        gather_fit_rings(v, scratch);
         std::array<Side, kMaxSides> sides;
         const std::size_t count = rule_.scope == FitScope::Patches
                                       ? patch_sides(v, scratch, sides)
@@ -113,6 +116,13 @@ public:
     }
 
 private:
+    /// The vertices within the fit rings of v into scratch.reached.
+    void gather_fit_rings(Index v, Scratch& scratch) const {
+        gather_rings(current_.mesh, current_.connectivity, v, options_.fit_rings, kMaxGathered,
+                     scratch);
+        scratch.fit_reached = scratch.reached.size();
+    }
+
     /// Whether v has a patch and is one to move: near meshes move band vertices only.
     bool may_move(Index v) const {
         return vertex_patch_[v] != kNoIndex &&
@@ -135,8 +145,7 @@ private:
         std::array<Index, kMaxSides> patches{};
         const std::size_t count = add_ring_patches(v, patches, 0);
         if (count < 2 || count > 3) return std::nullopt;
-        gather_rings(current_.mesh, current_.connectivity, v, options_.fit_rings, kMaxGathered,
-                     scratch);
+        gather_fit_rings(v, scratch);
         const std::span<const Index> around(patches.data(), count);
         Fits fits;
         if (fit_sides(around, fits, scratch) < count)
@@ -288,11 +297,15 @@ private:
     }
 
     /// Into scratch.points the gathered vertices of `patch` (near: off the bands, whose
-    /// vertices lie off their face); gives the sum of their normals, the side the fit faces.
-    Vec3 collect_side_points(Index patch, Scratch& scratch) const {
+    /// vertices lie off their face), of the first `count` gathered (all by default); gives the
+    /// sum of their normals, the side the fit faces.
+    Vec3 collect_side_points(Index patch, Scratch& scratch,
+                             std::size_t count = std::numeric_limits<std::size_t>::max()) const {
         scratch.points.clear();
         Vec3 facing = Vec3::Zero();
-        for (Index j : scratch.reached) {
+        const std::size_t end = std::min(count, scratch.reached.size());
+        for (std::size_t i = 0; i < end; ++i) {
+            const Index j = scratch.reached[i];
             if (vertex_patch_[j] != patch) continue;
             if (rule_.placement == VertexPlacement::Near && in_band_[j]) continue;
             scratch.points.push_back(current_.mesh.positions[j]);
@@ -423,7 +436,7 @@ private:
         if (rule_.placement != VertexPlacement::Near || own.patch == kNoIndex ||
             own.fit.rms_distance <= 1e-3 * rule_.grid.pitch)
             return std::nullopt;
-        collect_side_points(own.patch, scratch);
+        collect_side_points(own.patch, scratch, scratch.fit_reached);
         const std::optional<HeightFit> fit =
             fit_height_quadric(scratch.points, own.fit.plane, current_.mesh.positions[v]);
         if (!fit || !(fit->rms_distance < 0.5 * own.fit.rms_distance) ||
