@@ -112,6 +112,30 @@ TEST(VertexMoves, SurfaceNetsBandVerticesOnCurvedFacesMoveOntoTheirSurface) {
     EXPECT_LT(worst, 0.1 * p.grid.pitch);
 }
 
+// The second-order surface a band vertex on a curved side moves onto is fitted to the vertices
+// its own plane is fitted to, within the fit rings, however far its other sides are looked for:
+// a vertex moved under both reaches of the other sides lands on the same point (at 0.4 mm, 7
+// vertices here did not while the surface took in every vertex gathered for the other sides).
+TEST(VertexMoves, CurvedSideFittedWithinTheFitRingsWhereverTheOtherSidesAre) {
+    const Mesh mesh = test::small_part(SmallPart::BossedPlate, 0.4, sim::Mesher::SurfaceNets);
+    const sim::GridSpec spec = test::small_part_grid(SmallPart::BossedPlate, 0.4);
+    const Detection d = detect_bands(mesh, build_connectivity(mesh), {});
+    auto moves = [&](int other_side_fit_rings) {
+        VertexMoveOptions options;
+        options.other_side_fit_rings = other_side_fit_rings;
+        return plan_vertex_moves(d.surface(mesh), mesh.positions, d.features.vertex_patch, d.bands,
+                                 {VertexPlacement::Near, {spec.pitch, spec.origin}, {}}, options);
+    };
+    const VertexMoves five = moves(5), six = moves(6);
+    std::size_t both = 0;
+    for (Index v = 0; v < mesh.vertex_count(); ++v) {
+        if (!five.moved[v] || !six.moved[v]) continue;
+        ++both;
+        EXPECT_EQ(five.position[v], six.position[v]) << v;
+    }
+    EXPECT_GT(both, 100u);
+}
+
 /// How many of p's coordinates lie on a face plane of the pocketed block (the box [0, 14] x
 /// [0, 11] x [0, 6] less the pocket [3, 8] x [3, 8] x [2.8, 7]): two on an edge between them.
 int coordinates_on_block_planes(const Vec3& p) {
@@ -144,6 +168,51 @@ TEST(VertexMoves, SurfaceNetsVerticesBetweenPatchesMoveOntoTheEdge) {
     // rows, one of them on the hole's rim and off the face, and two parallel rows fit a plane
     // exactly (1 of 102 here). Without the scatter limit 10 of 111 land off the edges.
     EXPECT_GE(on_edge, between - between / 20);
+}
+
+/// Per vertex: 1 where it is a corner of an edge or corner triangle.
+std::vector<std::uint8_t> band_vertices(const Mesh& mesh, const BandClassification& bands) {
+    std::vector<std::uint8_t> in_band(mesh.vertex_count(), 0);
+    for (Index f = 0; f < mesh.face_count(); ++f) {
+        if (bands.face_role[f] == BandRole::None) continue;
+        for (Index v : mesh.triangles[f]) in_band[v] = 1;
+    }
+    return in_band;
+}
+
+// A band vertex of a patch whose cell a sharp edge crosses lies off its own face, between the
+// faces (the mean of crossings on both), as a vertex between patches does: it goes onto the
+// edge too, within its cell, where every face around it then lies on one side (its other two
+// corners of one patch, or one of them on the edge). A face with corners on both sides left
+// around a vertex on the edge stands across it, and is left a chamfer facet.
+TEST(VertexMoves, SurfaceNetsBandVerticesOfAPatchMoveOntoTheEdgeWhereTheirFacesStayOneSided) {
+    const Planned p =
+        plan(SmallPart::PocketedBlock, sim::Mesher::SurfaceNets, VertexPlacement::Near);
+    const Detection d = detect_bands(p.mesh, build_connectivity(p.mesh), {});
+    const std::vector<Index>& patch = d.features.vertex_patch;
+    const std::vector<std::uint8_t> in_band = band_vertices(p.mesh, d.bands);
+    std::vector<std::uint8_t> on_edge(p.mesh.vertex_count(), 0);
+    for (Index v = 0; v < p.mesh.vertex_count(); ++v)
+        on_edge[v] = p.moves.moved[v] && coordinates_on_block_planes(p.moves.position[v]) >= 2;
+    std::size_t band = 0, onto_edge = 0;
+    for (Index v = 0; v < p.mesh.vertex_count(); ++v) {
+        if (!in_band[v] || patch[v] == kNoIndex) continue;
+        ++band;
+        if (!on_edge[v]) continue;
+        ++onto_edge;
+        EXPECT_TRUE(in_same_cell(p.grid, p.mesh.positions[v], p.moves.position[v])) << v;
+        for (Index f : d.connectivity.faces_around(v)) {
+            const Triangle& t = p.mesh.triangles[f];
+            const int k = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+            const Index a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+            const bool one_side = patch[a] != kNoIndex && patch[a] == patch[b];
+            EXPECT_TRUE(on_edge[a] || on_edge[b] || one_side) << v << " " << f;
+        }
+    }
+    // 198 of 499 here (none while they went onto their own face's plane only); 202 without
+    // the one-sided test, one of them with a face across the edge.
+    EXPECT_GT(band, 400u);
+    EXPECT_GE(onto_edge, band / 3);
 }
 
 // Off the grid axes a sharp edge runs through cells whose vertex lies between its faces
@@ -181,11 +250,7 @@ TEST(VertexMoves, SurfaceNetsVerticesBetweenPatchesReachAnEdgeOffTheGridAxes) {
 TEST(VertexMoves, SurfaceNetsBandVerticesFindTheirOtherSideAcrossAWideBand) {
     const Planned p = plan(SmallPart::TiltedWedge, sim::Mesher::SurfaceNets, VertexPlacement::Near);
     const Detection d = detect_bands(p.mesh, build_connectivity(p.mesh), {});
-    std::vector<std::uint8_t> in_band(p.mesh.vertex_count(), 0);
-    for (Index f = 0; f < p.mesh.face_count(); ++f) {
-        if (d.bands.face_role[f] == BandRole::None) continue;
-        for (Index v : p.mesh.triangles[f]) in_band[v] = 1;
-    }
+    const std::vector<std::uint8_t> in_band = band_vertices(p.mesh, d.bands);
     std::size_t band = 0, moved = 0;
     for (Index v = 0; v < p.mesh.vertex_count(); ++v) {
         if (!in_band[v] || d.features.vertex_patch[v] == kNoIndex) continue;

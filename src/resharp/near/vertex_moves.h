@@ -88,7 +88,11 @@ struct MoveRule {
 /// their surface already, up to its curvature); a vertex of no patch whose ring meets two or
 /// three patches moves onto where their planes meet (the sharp edge or corner): the point of it
 /// nearest the vertex within its input cell, or, where it misses that cell, the cell's point
-/// nearest it. Midpoint: every vertex with a plane of its own
+/// nearest it. A band vertex of a patch that lies off its own plane goes instead onto where its
+/// sides' planes meet, where that crosses its cell and every face around it then lies on one
+/// side: its two other corners of one patch, or one of them on a junction too (the largest set
+/// of such vertices, which does not depend on the order they are judged in).
+/// Midpoint: every vertex with a plane of its own
 /// patch (or, Neighbourhood, around it) moves along its input grid edge onto it, within the edge;
 /// a patch whose vertices off the bands scatter about one plane as midpoints of one face's
 /// crossings do has that plane, fitted to all of them, and a vertex of no patch among such
