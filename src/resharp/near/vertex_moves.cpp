@@ -213,12 +213,7 @@ private:
         gather_fit_rings(v, scratch);
         std::size_t count = 0;
         for (Index j : scratch.reached) {
-            const Index p = vertex_patch_[j];
-            if (p == kNoIndex ||
-                std::find(patches.begin(), patches.begin() + count, p) != patches.begin() + count)
-                continue;
-            if (count == kMaxSides) return std::nullopt;
-            patches[count++] = p;
+            if (!add_patch_of(j, patches, count)) return std::nullopt;
         }
         if (count < 2) return std::nullopt;
         std::array<Side, kMaxSides> sides;
@@ -387,13 +382,21 @@ private:
     /// at most kMaxSides in all. Gives the count.
     std::size_t add_ring_patches(Index v, std::array<Index, kMaxSides>& patches,
                                  std::size_t count) const {
-        for_each_ring_vertex(current_.mesh, current_.connectivity, v, [&](Index j) {
-            const Index p = vertex_patch_[j];
-            if (p == kNoIndex || count == kMaxSides) return;
-            if (std::find(patches.begin(), patches.begin() + count, p) == patches.begin() + count)
-                patches[count++] = p;
-        });
+        for_each_ring_vertex(current_.mesh, current_.connectivity, v,
+                             [&](Index j) { add_patch_of(j, patches, count); });
         return count;
+    }
+
+    /// Adds vertex j's patch to patches[0, count) unless it has none or is there already;
+    /// false where it is new but kMaxSides are there (it is then left out).
+    bool add_patch_of(Index j, std::array<Index, kMaxSides>& patches, std::size_t& count) const {
+        const Index p = vertex_patch_[j];
+        if (p == kNoIndex ||
+            std::find(patches.begin(), patches.begin() + count, p) != patches.begin() + count)
+            return true;
+        if (count == kMaxSides) return false;
+        patches[count++] = p;
+        return true;
     }
 
     /// The plane of `patch` through its gathered vertices. Near: only vertices off the bands,

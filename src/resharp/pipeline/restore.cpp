@@ -527,9 +527,9 @@ private:
         // straddle two faces, into bands wider than the true ones; with its patches' vertices
         // on their whole planes it segments as an exact mesh does, and its patches reach the
         // edges (stepped_block turned, 100 cells: Edge F-score 0.10 -> 0.50).
-        Mesh current = moved_mesh(surface.mesh, moves);
         rule.scope = FitScope::Patches;
         for (int round = 0; round < kMidpointPatchRounds; ++round) {
+            const Mesh current = moved_mesh(surface.mesh, moves);
             smoothed = detect_bands(current, Connectivity(input.connectivity), options_);
             add_times(smoothed->stage_time);
             clock.run(Stage::VertexMoves, [&] {
@@ -537,7 +537,6 @@ private:
                                           smoothed->features.vertex_patch, smoothed->bands, rule,
                                           options);
             });
-            current = moved_mesh(surface.mesh, moves);
         }
         return moves;
     }
