@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """Compares restore() time of two resharp builds on the same meshes, side by side.
 
-    python3 bench/compare_restore.py BASE_EXE NEW_EXE MESH... [--runs 7] [--threads 1]
+    python3 bench/compare_restore.py BASE_EXE NEW_EXE MESH... [--runs 7] [--threads 1] [--stages]
 
 Runs `restore` of each build in turn (A B A B ...) on each mesh, reads restore()'s own total
 time from the JSON report (file reading and writing excluded), and prints per mesh the median
-of each build and the ratio of medians NEW / BASE. Python 3 stdlib only.
+of each build and the ratio of medians NEW / BASE. With --stages, also the median time of each
+stage the reports name (a stage one build lacks shows as -). Python 3 stdlib only.
 """
 
 import argparse
@@ -16,13 +17,25 @@ import subprocess
 import tempfile
 
 
-def restore_seconds(exe, mesh, threads, scratch):
+def restore_times(exe, mesh, threads, scratch):
+    """restore()'s total and per-stage seconds, from the report of one run."""
     report = os.path.join(scratch, "report.json")
     out = os.path.join(scratch, "out.stl")
     subprocess.run([exe, "restore", mesh, "-o", out, "--report", report, "--threads",
                     str(threads)], check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     with open(report) as f:
-        return json.load(f)["time_seconds"]["total"]
+        times = json.load(f)["time_seconds"]
+    return times["total"], times.get("stages", {})
+
+
+def stage_table(mesh, base_stages, new_stages):
+    """Markdown rows: each stage's median time in each build, milliseconds."""
+    def median_ms(runs, stage):
+        values = [run[stage] for run in runs if stage in run]
+        return f"{1000 * statistics.median(values):.1f}" if values else "-"
+    names = sorted({name for run in base_stages + new_stages for name in run})
+    return [f"| {os.path.basename(mesh)}: {name} | {median_ms(base_stages, name)} | "
+            f"{median_ms(new_stages, name)} |" for name in names]
 
 
 def main():
@@ -32,17 +45,27 @@ def main():
     parser.add_argument("meshes", nargs="+")
     parser.add_argument("--runs", type=int, default=7)
     parser.add_argument("--threads", type=int, default=1)
+    parser.add_argument("--stages", action="store_true", help="also each stage's medians")
     args = parser.parse_args()
+    stage_rows = []
     with tempfile.TemporaryDirectory() as scratch:
         print(f"| mesh | base median (s) | new median (s) | new / base |")
         print(f"| --- | --- | --- | --- |")
         for mesh in args.meshes:
-            base, new = [], []
+            base, new, base_stages, new_stages = [], [], [], []
             for _ in range(args.runs):
-                base.append(restore_seconds(args.base, mesh, args.threads, scratch))
-                new.append(restore_seconds(args.new, mesh, args.threads, scratch))
+                total, stages = restore_times(args.base, mesh, args.threads, scratch)
+                base.append(total)
+                base_stages.append(stages)
+                total, stages = restore_times(args.new, mesh, args.threads, scratch)
+                new.append(total)
+                new_stages.append(stages)
             b, n = statistics.median(base), statistics.median(new)
             print(f"| {os.path.basename(mesh)} | {b:.4f} | {n:.4f} | {n / b:.3f} |", flush=True)
+            stage_rows += stage_table(mesh, base_stages, new_stages)
+        if args.stages:
+            print("\n| mesh: stage | base median (ms) | new median (ms) |\n| --- | --- | --- |")
+            print("\n".join(stage_rows))
 
 
 if __name__ == "__main__":
