@@ -141,12 +141,34 @@ private:
     double thin_cosine_;
 };
 
+/// The per-face and per-half-edge flags of a guard run, allocated once for all the runs of a
+/// guard call: a run leaves `queued` clear (it pops every face it queues), and clear() clears
+/// the rest through the list of faces touched, so a run costs what it works on, not the mesh.
+struct GuardFlags {
+    std::vector<std::uint8_t> queued;   ///< per face (#F): in the worklist
+    std::vector<std::uint8_t> touched;  ///< per face (#F): a slot of it was set
+    std::vector<std::uint8_t> snapped;  ///< per half-edge (#3F): its edge was snapped once
+    std::vector<Index> touched_faces;   ///< the faces `touched` marks, in the order touched
+
+    explicit GuardFlags(std::size_t face_count)
+        : queued(face_count, 0), touched(face_count, 0), snapped(3 * face_count, 0) {}
+
+    /// Snapping sets a half-edge of a face it touches and its twin, of a face it touches too.
+    void clear() {
+        for (Index f : touched_faces) {
+            touched[f] = 0;
+            std::fill_n(snapped.begin() + 3 * f, 3, std::uint8_t{0});
+        }
+        touched_faces.clear();
+    }
+};
+
 /// Faces with a point that need a check, and the faces to check again after a repair. Each
 /// face is queued at most once at a time.
 class Worklist {
 public:
-    Worklist(std::size_t face_count, std::span<const Index> first)
-        : faces_(first.begin(), first.end()), queued_(face_count, 0) {
+    Worklist(std::vector<std::uint8_t>& queued, std::span<const Index> first)
+        : faces_(first.begin(), first.end()), queued_(queued) {
         for (Index f : first) queued_[f] = 1;
     }
     bool empty() const { return next_ == faces_.size(); }
@@ -163,7 +185,7 @@ public:
 
 private:
     std::vector<Index> faces_;
-    std::vector<std::uint8_t> queued_;
+    std::vector<std::uint8_t>& queued_;  ///< per face (#F), clear when the list is empty
     std::size_t next_ = 0;
 };
 
@@ -175,20 +197,15 @@ private:
 class Repairs {
 public:
     Repairs(const Connectivity& c, PointSlots slots, const PieceVertices& ids,
-            const PieceJudge& judge)
-        : c_(c),
-          slots_(std::move(slots)),
-          ids_(ids),
-          judge_(judge),
-          snapped_(c.twin.size(), 0),
-          touched_(slots_.corner_point.size(), 0) {}
+            const PieceJudge& judge, GuardFlags& flags)
+        : c_(c), slots_(std::move(slots)), ids_(ids), judge_(judge), flags_(flags) {}
 
     const PointSlots& slots() const { return slots_; }
     /// The slots decided; the repairs are done with.
     PointSlots take_slots() && { return std::move(slots_); }
     Fault fault_of(Index f) const { return judge_.fault_of(slots_, f); }
     /// Whether a repair has changed a slot of face f (its fault may differ from the start's).
-    bool touched(Index f) const { return touched_[f] != 0; }
+    bool touched(Index f) const { return flags_.touched[f] != 0; }
 
     /// Makes face f split soundly by changing as little as possible, in this order:
     /// - drop a single edge point (the first that is enough, in slot order): two close points
@@ -227,17 +244,22 @@ private:
     /// Sets slot i of face f, and for an edge the same slot seen from the face across it.
     void set(Index f, int i, Index value) {
         *slot(f, i) = value;
-        touched_[f] = 1;
+        touch(f);
         if (i == 3) return;
         const Index twin = c_.twin[3 * f + static_cast<Index>(i)];
         if (twin == kNoIndex) return;
         slots_.edge_point[twin] = value;
-        touched_[face_of(twin)] = 1;
+        touch(face_of(twin));
+    }
+    void touch(Index f) {
+        if (flags_.touched[f]) return;
+        flags_.touched[f] = 1;
+        flags_.touched_faces.push_back(f);
     }
     void mark_snapped(Index f, int i) {
         const Index h = 3 * f + static_cast<Index>(i);
-        snapped_[h] = 1;
-        if (c_.twin[h] != kNoIndex) snapped_[c_.twin[h]] = 1;
+        flags_.snapped[h] = 1;
+        if (c_.twin[h] != kNoIndex) flags_.snapped[c_.twin[h]] = 1;
     }
     /// Puts `replacement` in the slots of face f in `slots` (a bit per slot, 0..3) if the face
     /// then splits without fault; leaves them as they were otherwise.
@@ -295,7 +317,7 @@ private:
         unsigned may_snap = 0;
         for (int i = 0; i < 3; ++i) {
             if (*slot(f, i) == slots_.corner_point[f]) return false;
-            if (*slot(f, i) == kNoIndex || snapped_[3 * f + static_cast<Index>(i)]) continue;
+            if (*slot(f, i) == kNoIndex || flags_.snapped[3 * f + static_cast<Index>(i)]) continue;
             if (!beyond_only || beyond_corner(f, i)) may_snap |= 1u << i;
         }
         for (unsigned edges : {1u, 2u, 4u, 3u, 5u, 6u}) {
@@ -308,8 +330,7 @@ private:
     PointSlots slots_;
     const PieceVertices& ids_;
     const PieceJudge& judge_;
-    std::vector<std::uint8_t> snapped_;  ///< per half-edge (#3F): its edge was snapped once
-    std::vector<std::uint8_t> touched_;  ///< per face (#F): a slot of it was set
+    GuardFlags& flags_;  ///< which faces a slot of was set, and which edges were snapped
 };
 
 /// Every slot of `accepted` holds the point it held among the candidates, its face's corner
@@ -376,53 +397,67 @@ bool same_slots(const PointSlots& a, Index fa, const PointSlots& b, Index fb) {
                       b.edge_point.begin() + 3 * fb);
 }
 
-/// The faces a later guard run works on again, ascending, and per face (#F) 1 for those on
-/// the border of that region (see faces_to_guard_again).
-struct GuardAgain {
-    std::vector<Index> faces;
-    std::vector<std::uint8_t> is_border;
+/// Whether face f had a point at the start of the run that `before` withdrew points for.
+bool had_points_before(const SharpPoints& candidates, std::span<const std::uint8_t> before,
+                       Index f) {
+    bool any = false;
+    candidates.slots.for_each_point(f, [&](Index p) { any = any || !is_withdrawn(before, p); });
+    return any;
+}
+
+/// Per-face flags of guard_points_again()'s search for the faces to guard again, made once for
+/// all its runs: each run's region marks are cleared through its list of faces (clear()).
+struct RegionFlags {
+    std::vector<std::uint8_t> repaired;       ///< per face (#F): repaired by the last guard
+    std::vector<std::uint8_t> expand_anyway;  ///< per face (#F): searched across if left alone
+    std::vector<std::uint8_t> in_region;      ///< per face (#F): in the current run's region
+    std::vector<std::uint8_t> is_border;      ///< per face (#F): on the current region's border
+
+    RegionFlags(const GuardedPoints& previous, std::size_t face_count)
+        : repaired(face_count, 0),
+          expand_anyway(face_count, 0),
+          in_region(face_count, 0),
+          is_border(face_count, 0) {
+        for (const GuardRepair& r : previous.repairs) repaired[r.face] = 1;
+    }
+    void clear(const std::vector<Index>& region) {
+        for (Index f : region) in_region[f] = is_border[f] = 0;
+    }
 };
 
-/// The faces to guard again after more points were withdrawn: the faces that had points at the
+/// The faces to guard again after more points were withdrawn, ascending, marked in
+/// `flags.in_region` (and the border's in `flags.is_border`): the faces that had points at the
 /// last run's start (candidates less `before`) reached, across edges between such faces, from
 /// one that lost a point since (one of `now` but not of `before`; every such face is one of
 /// `holders` or lies across an edge of one). The search stops at the faces the last run left
 /// alone (never repaired, slots as they started), which become the border, unless
-/// `expand_anyway` (#F) marks them. A repair of a border face, or a change to its slots, is the
-/// only way the faces beyond can be drawn in (they push only their neighbours, and pushing a
-/// face left alone does nothing), so the region suffices if the run leaves its border alone.
+/// `flags.expand_anyway` marks them. A repair of a border face, or a change to its slots, is
+/// the only way the faces beyond can be drawn in (they push only their neighbours, and pushing
+/// a face left alone does nothing), so the region suffices if the run leaves its border alone.
 /// Bound: each face joins the list once, and is looked at from its three edges.
-GuardAgain faces_to_guard_again(const Connectivity& c, const SharpPoints& candidates,
-                                const GuardedPoints& previous, std::span<const std::uint8_t> before,
-                                std::span<const std::uint8_t> now, std::span<const Index> holders,
-                                const std::vector<std::uint8_t>& expand_anyway) {
+std::vector<Index> faces_to_guard_again(const Connectivity& c, const SharpPoints& candidates,
+                                        const GuardedPoints& previous,
+                                        std::span<const std::uint8_t> before,
+                                        std::span<const std::uint8_t> now,
+                                        std::span<const Index> holders, RegionFlags& flags) {
     const PointSlots& slots = candidates.slots;
-    const std::size_t face_count = slots.corner_point.size();
-    auto had_points = [&](Index f) {
-        bool any = false;
-        slots.for_each_point(f, [&](Index p) { any = any || !is_withdrawn(before, p); });
-        return any;
-    };
+    auto had_points = [&](Index f) { return had_points_before(candidates, before, f); };
     auto lost_a_point = [&](Index f) {
         bool lost = false;
         slots.for_each_point(
             f, [&](Index p) { lost = lost || (now[p] != 0 && !is_withdrawn(before, p)); });
         return lost;
     };
-    std::vector<std::uint8_t> repaired(face_count, 0);
-    for (const GuardRepair& r : previous.repairs) repaired[r.face] = 1;
     PointSlots started{std::vector<Index>(3), std::vector<Index>(1)};  // one face's start
     auto left_alone = [&](Index f) {
-        if (repaired[f] || expand_anyway[f]) return false;
+        if (flags.repaired[f] || flags.expand_anyway[f]) return false;
         start_face(candidates, before, f, started, 0);
         return same_slots(started, 0, previous.accepted, f);
     };
-    GuardAgain again{{}, std::vector<std::uint8_t>(face_count, 0)};
-    std::vector<std::uint8_t> marked(face_count, 0);
     std::vector<Index> expand;  // the faces whose neighbours join
     auto seed = [&](Index f) {
-        if (marked[f] || !lost_a_point(f)) return;
-        marked[f] = 1;
+        if (flags.in_region[f] || !lost_a_point(f)) return;
+        flags.in_region[f] = 1;
         expand.push_back(f);
     };
     for (Index f : holders) {
@@ -431,38 +466,61 @@ GuardAgain faces_to_guard_again(const Connectivity& c, const SharpPoints& candid
             if (c.twin[3 * f + k] != kNoIndex) seed(face_of(c.twin[3 * f + k]));
         }
     }
-    again.faces = expand;
+    std::vector<Index> region = expand;
     for (std::size_t i = 0; i < expand.size(); ++i) {
         for (Index k = 0; k < 3; ++k) {
             const Index twin = c.twin[3 * expand[i] + k];
             if (twin == kNoIndex) continue;
             const Index g = face_of(twin);
-            if (marked[g] || !had_points(g)) continue;
-            marked[g] = 1;
-            again.faces.push_back(g);
+            if (flags.in_region[g] || !had_points(g)) continue;
+            flags.in_region[g] = 1;
+            region.push_back(g);
             if (left_alone(g)) {
-                again.is_border[g] = 1;
+                flags.is_border[g] = 1;
             } else {
                 expand.push_back(g);
             }
         }
     }
-    std::sort(again.faces.begin(), again.faces.end());
-    return again;
+    std::sort(region.begin(), region.end());
+    return region;
+}
+
+/// Marks `flags.expand_anyway` on the faces that had points (had_points_before()) within
+/// `depth` steps of `faces` across edges between such faces, `faces` included. Bound: each face
+/// is marked once, and looked at from its three edges.
+void expand_beyond(const Connectivity& c, const SharpPoints& candidates,
+                   std::span<const std::uint8_t> before, std::vector<Index> faces, int depth,
+                   RegionFlags& flags) {
+    for (Index f : faces) flags.expand_anyway[f] = 1;
+    for (int step = 0; step < depth && !faces.empty(); ++step) {
+        std::vector<Index> next;
+        for (Index f : faces) {
+            for (Index k = 0; k < 3; ++k) {
+                const Index twin = c.twin[3 * f + k];
+                if (twin == kNoIndex) continue;
+                const Index g = face_of(twin);
+                if (flags.expand_anyway[g] || !had_points_before(candidates, before, g)) continue;
+                flags.expand_anyway[g] = 1;
+                next.push_back(g);
+            }
+        }
+        faces = std::move(next);
+    }
 }
 
 /// Checks the faces of `first` (ascending) and repairs the faulty ones, appending each repair
 /// to `log`. Bound: a face is popped once at the start and once per repair of a face across
 /// one of its edges; repairs are bounded as Repairs says (GuardReport::repairs).
 void repair_faults(const Connectivity& c, std::span<const Index> first, Repairs& repairs,
-                   std::vector<GuardRepair>& log) {
+                   std::vector<std::uint8_t>& queued, std::vector<GuardRepair>& log) {
     // The faults of the faces as they start, judged in parallel (a face's fault reads only its
     // own slots): the worklist pops each of them once before any face it pushes, and takes
     // this verdict where no repair has set a slot of the face since.
     std::vector<Fault> at_start(first.size());
     for_each_index(first.size(), 256,
                    [&](std::size_t i) { at_start[i] = repairs.fault_of(first[i]); });
-    Worklist work(repairs.slots().corner_point.size(), first);
+    Worklist work(queued, first);
     for (std::size_t popped = 0; !work.empty(); ++popped) {
         const Index f = work.pop();
         if (!repairs.slots().has_points(f)) continue;
@@ -499,16 +557,17 @@ void validate(const GuardOptions& options, const SharpPoints& candidates,
 }
 
 /// The guard on `slots`, starting from the faces `first` (ascending); `log` holds the repairs
-/// kept from an earlier run, if any.
+/// kept from an earlier run, if any. `flags` must be clear; the run leaves in them the faces
+/// whose slots it set.
 GuardedPoints guard_slots(const InputSurface& input, const FeatureNormals& feature_normals,
                           const SharpPoints& candidates, PointSlots slots,
                           std::span<const Index> first, std::vector<GuardRepair> log,
-                          const GuardOptions& options) {
+                          const GuardOptions& options, GuardFlags& flags) {
     const PieceVertices ids(input.mesh, candidates.points);
     const ReferenceNormals reference{feature_normals, input.normals.vertex};
     const PieceJudge judge(input, reference, ids, options.thin_material_angle_deg);
-    Repairs repairs(input.connectivity, std::move(slots), ids, judge);
-    repair_faults(input.connectivity, first, repairs, log);
+    Repairs repairs(input.connectivity, std::move(slots), ids, judge, flags);
+    repair_faults(input.connectivity, first, repairs, flags.queued, log);
     GuardedPoints out{std::move(repairs).take_slots(), report_of(log), std::move(log)};
     RESHARP_EXPENSIVE_ASSERT(only_takes_away(out.accepted, candidates, input.connectivity));
     return out;
@@ -522,7 +581,9 @@ GuardedPoints guard_points(const InputSurface& input, const FeatureNormals& feat
     validate(options, candidates, withdrawn);
     PointSlots slots = starting_slots(candidates, withdrawn);
     const std::vector<Index> first = faces_with_points(slots);
-    return guard_slots(input, feature_normals, candidates, std::move(slots), first, {}, options);
+    GuardFlags flags(input.mesh.face_count());
+    return guard_slots(input, feature_normals, candidates, std::move(slots), first, {}, options,
+                       flags);
 }
 
 GuardedPoints guard_points_again(const InputSurface& input, const FeatureNormals& feature_normals,
@@ -539,45 +600,67 @@ GuardedPoints guard_points_again(const InputSurface& input, const FeatureNormals
         }
     }
     if (withdrawn.empty()) return guard_points(input, feature_normals, candidates, {}, options);
-    auto guard_region = [&](const GuardAgain& again) {
-        std::vector<std::uint8_t> is_again(input.mesh.face_count(), 0);
-        for (Index f : again.faces) is_again[f] = 1;
-        // The region starts from the candidates; the faces beyond keep what they came to.
-        PointSlots slots = previous.accepted;
+    const std::size_t face_count = input.mesh.face_count();
+    GuardFlags flags(face_count);
+    RegionFlags region_flags(previous, face_count);
+    // The slots every run starts from: the region's from the candidates (start_face()), the
+    // faces beyond keep what they came to. A run that must be redone sets back what it changed.
+    PointSlots slots = previous.accepted;
+    auto set_back = [&](const std::vector<Index>& faces) {
+        for (Index f : faces) {
+            slots.corner_point[f] = previous.accepted.corner_point[f];
+            std::copy_n(previous.accepted.edge_point.begin() + 3 * f, 3,
+                        slots.edge_point.begin() + 3 * f);
+        }
+    };
+    auto guard_region = [&](const std::vector<Index>& region) {
         std::vector<Index> first;
-        for (Index f : again.faces) {
+        for (Index f : region) {
             start_face(candidates, withdrawn, f, slots, f);
             if (slots.has_points(f)) first.push_back(f);
         }
         std::vector<GuardRepair> kept;
         for (const GuardRepair& r : previous.repairs) {
-            if (!is_again[r.face]) kept.push_back(r);
+            if (!region_flags.in_region[r.face]) kept.push_back(r);
         }
         return guard_slots(input, feature_normals, candidates, std::move(slots), first,
-                           std::move(kept), options);
+                           std::move(kept), options, flags);
     };
-    // Guarded again until the run leaves the border alone: a second time with the border
-    // faces it did not leave alone searched across, then (the cascade goes on) with every face
-    // searched across, which stops at no border. Bound: three runs.
-    std::vector<std::uint8_t> expand_anyway(input.mesh.face_count(), 0);
+    // Guarded again until the run leaves the border alone, each time searched across the
+    // border faces it did not leave alone and the faces within 2^run - 1 steps beyond them: a
+    // cascade of repairs along a band moves the border a face or two a run (impeller's went on
+    // past 16 runs one face at a time), so the region grows the more the more runs it took
+    // (impeller's: 8 runs, 444 faces, where every face searched across made 5,874). After
+    // kRegionRuns, with every face searched across, which stops at no border. A run
+    // costs what its region holds (the flags and slots are set back through lists), not the
+    // mesh. Bound: kRegionRuns + 1 runs.
+    constexpr int kRegionRuns = 8;
     for (int run = 0;; ++run) {
-        if (run == 2) std::fill(expand_anyway.begin(), expand_anyway.end(), 1);
-        const GuardAgain region =
+        if (run == kRegionRuns) {
+            std::fill(region_flags.expand_anyway.begin(), region_flags.expand_anyway.end(), 1);
+        }
+        const std::vector<Index> region =
             faces_to_guard_again(input.connectivity, candidates, previous, withdrawn_before,
-                                 withdrawn, holders, expand_anyway);
+                                 withdrawn, holders, region_flags);
         GuardedPoints out = guard_region(region);
-        bool border_left_alone = true;
+        std::vector<Index> disturbed;  // border faces the run did not leave alone
         for (const GuardRepair& r : out.repairs) {
-            if (!region.is_border[r.face]) continue;
-            expand_anyway[r.face] = 1;
-            border_left_alone = false;
+            if (region_flags.is_border[r.face]) disturbed.push_back(r.face);
         }
-        for (Index f : region.faces) {
-            if (!region.is_border[f] || same_slots(out.accepted, f, previous.accepted, f)) continue;
-            expand_anyway[f] = 1;
-            border_left_alone = false;
+        for (Index f : region) {
+            if (region_flags.is_border[f] && !same_slots(out.accepted, f, previous.accepted, f)) {
+                disturbed.push_back(f);
+            }
         }
+        const bool border_left_alone = disturbed.empty();
         if (border_left_alone) return out;
+        expand_beyond(input.connectivity, candidates, withdrawn_before, std::move(disturbed),
+                      (1 << run) - 1, region_flags);
+        slots = std::move(out.accepted);
+        set_back(region);
+        set_back(flags.touched_faces);
+        flags.clear();
+        region_flags.clear(region);
     }
 }
 
