@@ -112,6 +112,34 @@ TEST(NearSurface, MidpointVerticesOfSlantedFacesLandOnTheirPlanes) {
     EXPECT_LT(quantile(after, 0.8), 0.035) << quantile(after, 0.8);
 }
 
+/// A curved face scatters about a plane fitted to its vertices by its sag, which a quadratic
+/// height over the plane takes out; a flat face's midpoints scatter in stairs, which none
+/// follows. Midpoint fits that are bent are not taken for planes, so the vertices of the bossed
+/// plate's boss, chamfer cone and dimple do not move onto chords, into the material or out of
+/// it. Before the sag test 221 of its 2,324 vertices ended more than a tenth of a pitch farther
+/// from the surface than the mesher put them, and their mean distance went 0.0715 -> 0.0823
+/// mm; with it, 27 and 0.0715 -> 0.0730 mm (still a little farther: the fits that pass,
+/// and move their vertices, are not all right).
+TEST(NearSurface, MidpointVerticesOfCurvedFacesDoNotMoveOntoChords) {
+    const Case c{SmallPart::BossedPlate, sim::Mesher::Midpoint, VertexMode::Midpoint};
+    const Mesh input = test::small_part(c.part, 0.5, c.mesher);
+    const sim::CsgSolid solid = test::small_part_solid(c.part);
+    const RestoreResult r = restore(input, near_options(c));
+    ASSERT_GT(r.report.moved_vertices, input.vertex_count() / 2);  // the rule is at work
+    std::size_t farther = 0;
+    double before = 0.0, after = 0.0;
+    for (std::size_t v = 0; v < input.vertex_count(); ++v) {
+        const double b = test::distance_along_lines(solid, input.positions[v]);
+        const double a = test::distance_along_lines(solid, r.mesh.positions[v]);
+        farther += a > b + 0.05;
+        before += b;
+        after += a;
+    }
+    EXPECT_LE(farther, 40u);
+    EXPECT_LT(after, 1.03 * before) << before / input.vertex_count() << " -> "
+                                     << after / input.vertex_count() << " mm";
+}
+
 TEST(NearSurface, ExactModeMovesNothing) {
     const Mesh input = test::small_part(SmallPart::PocketedBlock, 0.5, sim::Mesher::SurfaceNets);
     RestoreOptions o =

@@ -36,6 +36,8 @@ constexpr std::size_t kMinWholePatchPoints = 32;
 constexpr double kWholePatchScatter = 2.0;
 constexpr double kWholePatchBeyondShare = 0.001;
 constexpr double kWholePatchFitError = 0.02;
+constexpr double kSagShare = 0.5;
+constexpr double kMinSag = 0.03;
 /// ... the last two on faces within about 11 degrees of a grid plane only (the cosine of the
 /// normal's largest component above this), whose midpoints are too alike for the mean square:
 /// off the axes, where the plane's own error is a larger share of the bound, they refused the
@@ -473,7 +475,23 @@ private:
         expected *= h * h / 12.0 / static_cast<double>(vertices.size());
         const double square = fit->rms_distance * fit->rms_distance;
         if (!(square <= kWholePatchScatter * expected + 1e-6 * h * h)) return std::nullopt;
+        if (is_bent(points, *fit)) return std::nullopt;
         return fit;
+    }
+
+    /// Whether the points scatter about their plane `fit` mostly by its sag: a quadratic height
+    /// over the plane takes out more than kSagShare of their mean square, and more than
+    /// (kMinSag h)^2 (below that the plane is as good as the surface; on planes whose midpoints
+    /// all lie on them, rounding alone parts the two fits). A flat face's midpoints scatter in
+    /// stairs no quadratic follows.
+    bool is_bent(std::span<const Vec3> points, const PlaneFit& fit) const {
+        const std::optional<HeightFit> bent = fit_height_quadric(points, fit.plane, fit.centroid);
+        if (!bent) return false;
+        const double sag = fit.rms_distance * fit.rms_distance -
+                           bent->rms_distance * bent->rms_distance;  // mean square taken out
+        const double h = rule_.grid.pitch;
+        return sag > kSagShare * fit.rms_distance * fit.rms_distance &&
+               sag > kMinSag * kMinSag * h * h;
     }
 
     /// Into scratch.points the gathered vertices of `patch` (near: off the bands, whose
@@ -498,6 +516,8 @@ private:
         if (points.size() < static_cast<std::size_t>(options_.min_fit_points)) return std::nullopt;
         std::optional<PlaneFit> fit = fit_plane(points, facing);
         if (!fit || fit->rms_distance > max_scatter_) return std::nullopt;
+        if (rule_.placement == VertexPlacement::Midpoint && is_bent(points, *fit))
+            return std::nullopt;
         return fit;
     }
 
