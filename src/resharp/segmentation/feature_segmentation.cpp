@@ -140,31 +140,23 @@ std::vector<std::uint8_t> growth_links(const Growth& g) {
     return links;
 }
 
-/// The components of grow_from() without a limit, on the links: per face its component, and
-/// how many there are. They are numbered in the order of their first faces, as seeding a growth
-/// at each face not yet taken, in face order, numbers them. A union-find over the links in face
-/// order, not that breadth-first walk: the walk read the links, twins and ids of faces scattered
-/// over the mesh, cache miss after cache miss (impeller, one thread: the feature segmentation's
-/// fastest of 15 runs 62.8 -> 59.8 ms).
-std::vector<Index> components_of_links(const Connectivity& c,
-                                       const std::vector<std::uint8_t>& links, Index& count) {
-    const Index faces = static_cast<Index>(links.size());
-    DisjointSets sets(faces);  // a set's root is its first face
-    for (Index f = 0; f < faces; ++f) {
-        for (Index k = 0; k < 3; ++k) {
-            const Index twin = c.twin[3 * f + k];
-            // Links are symmetric: each is joined from the face with the smaller index.
-            if ((links[f] >> k & 1u) && face_of(twin) > f) sets.unite(f, face_of(twin));
+/// grow_from() without a limit, on the links: the component `id` of `seed`, its faces in
+/// `taken` in the order grow_from() takes them (half-edges 0, 1, 2 of each face in turn).
+void take_component(const Connectivity& c, const std::vector<std::uint8_t>& links, Index seed,
+                    Index id, std::vector<Index>& region, std::vector<Index>& taken) {
+    taken.assign(1, seed);
+    region[seed] = id;
+    // Bound: a face joins the component, and `taken`, once.
+    for (std::size_t head = 0; head < taken.size(); ++head) {
+        const Index u = taken[head];
+        for (int k = 0; k < 3; ++k) {
+            if (!(links[u] >> k & 1u)) continue;
+            const Index v = face_of(c.twin[3 * u + k]);
+            if (region[v] != kNoIndex) continue;
+            region[v] = id;
+            taken.push_back(v);
         }
     }
-    std::vector<Index> component(faces);
-    count = 0;
-    // A root comes before the other faces of its set, so its number is there when they ask.
-    for (Index f = 0; f < faces; ++f) {
-        const Index root = sets.find(f);
-        component[f] = root == f ? count++ : component[root];
-    }
-    return component;
 }
 
 /// A component grown again (regrow_in_sweep_order()): its number among all components, its
@@ -174,26 +166,6 @@ struct Regrown {
     std::vector<Index> faces;
     Index regions = 0;
 };
-
-/// Every component of more than `limit` faces (`component` per face, `count` components), in
-/// component order, with its faces ascending.
-std::vector<Regrown> large_components(const std::vector<Index>& component, Index count,
-                                      std::size_t limit) {
-    std::vector<std::size_t> size(count, 0);
-    for (Index id : component) ++size[id];
-    std::vector<Index> slot(count, kNoIndex);
-    std::vector<Regrown> large;
-    for (Index id = 0; id < count; ++id) {
-        if (size[id] <= limit) continue;
-        slot[id] = static_cast<Index>(large.size());
-        large.push_back({id, {}});
-        large.back().faces.reserve(size[id]);
-    }
-    for (Index f = 0; f < component.size(); ++f) {
-        if (slot[component[f]] != kNoIndex) large[slot[component[f]]].faces.push_back(f);
-    }
-    return large;
-}
 
 /// §4 steps 1-3: breadth-first growth across manifold edges while neighbouring face normals
 /// differ by less than the angle. A region holding `curved_limit` faces (0: no limit) only
@@ -211,15 +183,20 @@ std::vector<Index> grow_regions(const Mesh& mesh, const Connectivity& c,
                                 std::size_t curved_limit, std::size_t& region_count) {
     const Growth unlimited{mesh, c, normals, std::cos(max_angle_deg * kDegree), 0};
     const Growth limited{mesh, c, normals, unlimited.min_cosine, curved_limit};
-    Index components = 0;
-    // First the component of each face.
-    std::vector<Index> region = components_of_links(c, growth_links(unlimited), components);
+    std::vector<Index> region(normals.size(), kNoIndex);  // first the component of each face
+    std::vector<Index> component;
     std::vector<Regrown> regrown;
-    if (curved_limit != 0) {
-        regrown = large_components(region, components, curved_limit);
-        std::erase_if(regrown, [&](const Regrown& r) {
-            return normals_within_angle(normals, r.faces, max_angle_deg);
-        });
+    Index components = 0;
+    const std::vector<std::uint8_t> links = growth_links(unlimited);
+    // Bound: each seed takes at least itself, so at most #F components.
+    for (Index seed = 0; seed < normals.size(); ++seed) {
+        if (region[seed] != kNoIndex) continue;
+        take_component(c, links, seed, components, region, component);
+        if (curved_limit != 0 && component.size() > curved_limit &&
+            !normals_within_angle(normals, component, max_angle_deg)) {
+            regrown.push_back({components, component});
+        }
+        ++components;
     }
     region_count = components;
     if (regrown.empty()) return region;  // the components are the regions
