@@ -36,13 +36,17 @@ constexpr std::size_t kMinWholePatchPoints = 32;
 constexpr double kWholePatchScatter = 2.0;
 constexpr double kWholePatchBeyondShare = 0.001;
 constexpr double kWholePatchFitError = 0.02;
-constexpr double kSagShare = 0.5;
-constexpr double kMinSag = 0.03;
 /// ... the last two on faces within about 11 degrees of a grid plane only (the cosine of the
 /// normal's largest component above this), whose midpoints are too alike for the mean square:
 /// off the axes, where the plane's own error is a larger share of the bound, they refused the
 /// planes of most slanted faces (stepped_block turned: Edge F-score 0.58 -> 0.37).
 constexpr double kAcrossAnAxisCosine = 0.98;
+/// Midpoint: a fit is bent, and no plane, where a quadratic height over it takes out more than
+/// this share of its points' mean square distance, and more than this distance (in pitches)
+/// squared (is_bent(); docs/method.md; with 0.4, mech's midpoint Edge F-score fell 0.629 ->
+/// 0.566 and frogface's 0.774 -> 0.663).
+constexpr double kSagShare = 0.5;
+constexpr double kMinSag = 0.03;
 /// Midpoint: how far short of its grid edge's ends a vertex stops, and how far beyond them a
 /// plane may meet the edge's line and still be taken for crossing it, in pitches (within_edge()).
 constexpr double kEdgeEndMargin = 0.01;
