@@ -1,7 +1,7 @@
 #include "resharp/surfaces/plane_fit.h"
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
-#include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
 
@@ -39,29 +39,43 @@ std::optional<HeightFit> fit_height_quadric(std::span<const Vec3> points, const 
     const Vec3 foot = plane.projection(at);
     const Eigen::Matrix3d frame = tangent_frame(plane.normal);
     const Vec3 t1 = frame.col(0), t2 = frame.col(1);
-    const Eigen::Index n = static_cast<Eigen::Index>(points.size());
-    Eigen::MatrixXd design(n, 6);
-    Eigen::VectorXd height(n);
     double scale = 0.0;  // the points' reach, so the rank test does not depend on units
-    for (Eigen::Index i = 0; i < n; ++i) {
-        const Vec3 d = points[static_cast<std::size_t>(i)] - foot;
-        const double u = d.dot(t1), v = d.dot(t2);
-        scale = std::max({scale, std::abs(u), std::abs(v)});
-        design.row(i) << 1.0, u, v, u * u, u * v, v * v;
-        height[i] = d.dot(plane.normal);
+    for (const Vec3& p : points) {
+        const Vec3 d = p - foot;
+        scale = std::max({scale, std::abs(d.dot(t1)), std::abs(d.dot(t2))});
     }
     if (!(scale > 0.0)) return std::nullopt;
-    // Columns in units of the reach: well scaled, so the QR's rank threshold means the geometry.
-    const Eigen::Vector<double, 6> unit{1.0,           scale,         scale,
-                                        scale * scale, scale * scale, scale * scale};
-    design = design * unit.cwiseInverse().asDiagonal();
-    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(design);
-    qr.setThreshold(1e-6);
-    if (qr.rank() < 6) return std::nullopt;
-    const Eigen::VectorXd coefficients = qr.solve(height);
-    const double residual = (design * coefficients - height).squaredNorm();
+    // One row per point, in units of the reach: 1, u, v, u^2, u v, v^2 against the height.
+    auto row = [&](const Vec3& p) {
+        const Vec3 d = p - foot;
+        const double u = d.dot(t1) / scale, v = d.dot(t2) / scale;
+        return Eigen::Vector<double, 6>{1.0, u, v, u * u, u * v, v * v};
+    };
+    // The normal equations: a fixed 6 x 6 system, where a QR of the n x 6 rows cost the midpoint
+    // moves, which test every fit, two fifths of restore()'s instructions on mech. The columns
+    // are scaled to the reach, so squaring their condition stays far from rounding.
+    Eigen::Matrix<double, 6, 6> gram = Eigen::Matrix<double, 6, 6>::Zero();
+    Eigen::Vector<double, 6> moment = Eigen::Vector<double, 6>::Zero();
+    for (const Vec3& p : points) {
+        const Eigen::Vector<double, 6> r = row(p);
+        gram.noalias() += r * r.transpose();
+        moment += r * (p - foot).dot(plane.normal);
+    }
+    // Points near one line or conic of the plane do not fix the six coefficients: a pivot of
+    // the Gram matrix's factorization vanishes against the largest (1e-12: the QR's 1e-6 on
+    // the rows, squared).
+    const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> factors(gram);
+    const Eigen::Vector<double, 6> pivots = factors.vectorD().cwiseAbs();
+    if (factors.info() != Eigen::Success || !(pivots.minCoeff() > 1e-12 * pivots.maxCoeff()))
+        return std::nullopt;
+    const Eigen::Vector<double, 6> coefficients = factors.solve(moment);
+    double residual = 0.0;
+    for (const Vec3& p : points) {
+        const double r = row(p).dot(coefficients) - (p - foot).dot(plane.normal);
+        residual += r * r;
+    }
     return HeightFit{foot + coefficients[0] * plane.normal,
-                     std::sqrt(residual / static_cast<double>(n))};
+                     std::sqrt(residual / static_cast<double>(points.size()))};
 }
 
 }  // namespace resharp
