@@ -156,6 +156,11 @@ public:
     }
 
 private:
+    /// How near a point must be to a plane or junction to count as on it, and how close to a
+    /// plane a fit's points must be to count as lying on it: a thousandth of a pitch, far above
+    /// rounding and far below anything a mesher gets wrong.
+    double on_plane_tolerance() const { return 1e-3 * rule_.grid.pitch; }
+
     /// The vertices within the fit rings of v into scratch.reached.
     void gather_fit_rings(Index v, Scratch& scratch) const {
         gather_rings(current_.mesh, current_.connectivity, v, options_.fit_rings, kMaxGathered,
@@ -227,7 +232,7 @@ private:
             if (!patch_plane_[patches[i]]) return std::nullopt;
             sides[i] = {patches[i], *patch_plane_[patches[i]]};
         }
-        const double tolerance = 1e-3 * rule_.grid.pitch;
+        const double tolerance = on_plane_tolerance();
         const Vec3& x = current_.mesh.positions[v];
         std::optional<Vec3> best;
         for (std::size_t a = 0; a < count; ++a) {
@@ -248,7 +253,7 @@ private:
     /// crosses the cell and is a sharp edge or corner (sharp_junction()). None elsewhere: a
     /// vertex on its plane, or a junction that passes beside the cell.
     std::optional<Vec3> point_on_sides_junction(Index v, std::span<const Side> sides) const {
-        const double tolerance = 1e-3 * rule_.grid.pitch;
+        const double tolerance = on_plane_tolerance();
         const Vec3& x = current_.mesh.positions[v];
         if (rule_.placement != VertexPlacement::Near || sides.size() < 2 || sides.size() > 3 ||
             std::abs(sides[0].fit.plane.signed_distance(x)) <= tolerance)
@@ -579,7 +584,7 @@ private:
         if (within_reach(from, y)) return y;
         const Vec3 in_cell = cell_of(from).clamp(nearest_to_cell(
             x, [&](const Vec3& p) { return plane.projection(p); }, from));
-        if (std::abs(plane.signed_distance(in_cell)) > 1e-3 * rule_.grid.pitch) return std::nullopt;
+        if (std::abs(plane.signed_distance(in_cell)) > on_plane_tolerance()) return std::nullopt;
         return in_cell;
     }
 
@@ -656,7 +661,7 @@ private:
     /// radius r leaves it by about (3 h)^2 / 2 r at the band.
     std::optional<Vec3> point_on_curved(Index v, const Side& own, Scratch& scratch) const {
         if (rule_.placement != VertexPlacement::Near || own.patch == kNoIndex ||
-            own.fit.rms_distance <= 1e-3 * rule_.grid.pitch)
+            own.fit.rms_distance <= on_plane_tolerance())
             return std::nullopt;
         collect_side_points(own.patch, scratch, scratch.fit_reached);
         const std::optional<HeightFit> fit =
@@ -674,7 +679,7 @@ private:
     /// corpus: Edge F-score 0.530 -> 0.680 on hex_prism aligned, docs/results.md).
     std::optional<Vec3> point_on_own_side(Index v, std::span<const Side> sides,
                                           Scratch& scratch) const {
-        const double tolerance = 1e-3 * rule_.grid.pitch;
+        const double tolerance = on_plane_tolerance();
         const Side& own = sides[0];
         std::optional<Vec3> y = point_on_curved(v, own, scratch);
         if (!y) y = point_on(v, own);
