@@ -7,6 +7,7 @@
 #include <numbers>
 #include <set>
 
+#include "resharp/core/errors.h"
 #include "resharp/mesh/geometry.h"
 #include "resharp/segmentation/edge_segmentation.h"
 #include "support/grid_shapes.h"
@@ -52,6 +53,20 @@ TEST(FeatureSegmentation, BoxHasSixFacesAndItsBandsApart) {
                            shape.surface_ids[t[1]] != shape.surface_ids[t[2]];
         EXPECT_EQ(s.face_patch[f] == kNoIndex, mixed) << "face " << f;
     }
+}
+
+TEST(FeatureSegmentation, GrownRegionsAreEveryFacesAndOfThisMesh) {
+    const test::SampledShape shape = test::sampled_box();
+    const Mesh& mesh = shape.mesh;
+    const Connectivity c = build_connectivity(mesh);
+    const auto fn = face_normals(mesh);
+    GrownRegions grown = grow_feature_regions(mesh, c, fn);
+    ASSERT_EQ(grown.face_region.size(), mesh.face_count());
+    for (Index r : grown.face_region) EXPECT_LT(r, grown.count);
+    EXPECT_EQ(segment(mesh).grown_patches, grown.count);
+    grown.face_region.pop_back();  // regions of a mesh with a face less
+    const std::vector<std::uint8_t> no_edges(mesh.vertex_count(), 0);
+    EXPECT_THROW(segment_features(mesh, c, fn, std::move(grown), no_edges), InvalidInput);
 }
 
 TEST(FeatureSegmentation, LabelsEveryVertexOfEveryShapeByItsSurface) {

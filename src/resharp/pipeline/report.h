@@ -17,8 +17,8 @@ namespace resharp {
 enum class Stage {
     MeshBuilding,         ///< adjacency, diagnostics, normals
     Curvature,            ///< local height intensity
-    EdgeSegmentation,     ///< k-means and refinement
-    FeatureSegmentation,  ///< region growing, bands, tiny patches, merging
+    EdgeSegmentation,     ///< k-means, refinement; on 2+ threads also region growing, beside
+    FeatureSegmentation,  ///< region growing (on 1 thread), bands, tiny patches, merging
     Classification,       ///< edge and corner triangles
     FeatureNormals,       ///< eq. 5.1
     VertexMoves,          ///< near-surface meshes: vertices onto their fitted sides

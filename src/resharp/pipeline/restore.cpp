@@ -212,12 +212,31 @@ Detection detect_bands_calling(const Mesh& mesh, Connectivity connectivity,
         curvatures = estimate_principal_curvatures(mesh, d.connectivity, d.normals.vertex);
     });
     after_curvature();
-    clock.run(Stage::EdgeSegmentation, [&] {
+    GrownRegions regions;
+    auto grow = [&] {
+        regions = grow_feature_regions(mesh, d.connectivity, d.normals.face, options.features);
+    };
+    auto find_edges = [&] {
         d.edges = segment_edges(mesh, d.connectivity, curvatures, d.normals.face, options.edges);
-    });
+    };
+    if (tbb::this_task_arena::max_concurrency() < 2) {
+        clock.run(Stage::EdgeSegmentation, find_edges);
+        clock.run(Stage::FeatureSegmentation, grow);
+    } else {
+        // The feature regions read no edge labels: they grow beside the edge segmentation, whose
+        // stage time then holds theirs. Both are mostly serial; a thread left idle by one takes
+        // the other (or the placement measurement after_curvature() started). If the edge
+        // segmentation throws, the group's destructor cancels and waits for the growth.
+        clock.run(Stage::EdgeSegmentation, [&] {
+            tbb::task_group beside;
+            beside.run(grow);
+            find_edges();
+            beside.wait();
+        });
+    }
     clock.run(Stage::FeatureSegmentation, [&] {
-        d.features = segment_features(mesh, d.connectivity, d.normals.face, d.edges.is_edge,
-                                      options.features);
+        d.features = segment_features(mesh, d.connectivity, d.normals.face, std::move(regions),
+                                      d.edges.is_edge, options.features);
     });
     classify_and_fit_normals(mesh, d, options, clock);
     return d;

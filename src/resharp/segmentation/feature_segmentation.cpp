@@ -9,6 +9,7 @@
 #include <limits>
 #include <numbers>
 #include <span>
+#include <string>
 #include <tuple>
 
 #include "resharp/core/disjoint_sets.h"
@@ -700,15 +701,38 @@ Vec3 patch_mean_normal(const Mesh& mesh, const Connectivity& c, const std::vecto
     return length > 0.0 ? Vec3(sum / length) : Vec3::Zero();
 }
 
+GrownRegions grow_feature_regions(const Mesh& mesh, const Connectivity& connectivity,
+                                  const std::vector<Vec3>& face_normals,
+                                  const FeatureSegmentationOptions& options) {
+    validate(options);
+    GrownRegions grown;
+    grown.face_region = grow_regions(mesh, connectivity, face_normals, options.max_normal_angle_deg,
+                                     options.curved_region_faces, grown.count);
+    return grown;
+}
+
 FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& connectivity,
                                      const std::vector<Vec3>& face_normals,
                                      const std::vector<std::uint8_t>& is_edge_vertex,
                                      const FeatureSegmentationOptions& options) {
+    return segment_features(mesh, connectivity, face_normals,
+                            grow_feature_regions(mesh, connectivity, face_normals, options),
+                            is_edge_vertex, options);
+}
+
+FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& connectivity,
+                                     const std::vector<Vec3>& face_normals, GrownRegions regions,
+                                     const std::vector<std::uint8_t>& is_edge_vertex,
+                                     const FeatureSegmentationOptions& options) {
     validate(options);
+    if (regions.face_region.size() != mesh.face_count()) {
+        throw InvalidInput("feature segmentation: " + std::to_string(regions.face_region.size()) +
+                           " grown regions' faces for " + std::to_string(mesh.face_count()) +
+                           " faces");
+    }
     FeatureSegmentation s;
-    std::vector<Index> region =
-        grow_regions(mesh, connectivity, face_normals, options.max_normal_angle_deg,
-                     options.curved_region_faces, s.grown_patches);
+    s.grown_patches = regions.count;
+    std::vector<Index> region = std::move(regions.face_region);
     // The rings of one region, taken once (in parallel): absorbing tiny patches, making bands,
     // merging and renumbering map each id to one, which keeps them so.
     std::vector<Index> single = single_ring_patches(connectivity, region, mesh.vertex_count());

@@ -62,9 +62,32 @@ Vec3 patch_mean_normal(const Mesh& mesh, const Connectivity& connectivity,
                        const std::vector<Vec3>& face_normals, const std::vector<Index>& face_patch,
                        Index v, Index p, Index away = kNoIndex);
 
-/// Takes the mesh, its connectivity, unit face normals (#F; zero for degenerate faces, which
-/// never join a patch by growing) and the edge-vertex labels of segment_edges (#V).
+/// The regions of §4 steps 1-3, before any patch is told a band, absorbed or merged.
+struct GrownRegions {
+    std::vector<Index> face_region;  ///< per face (#F): its region, in [0, count)
+    std::size_t count = 0;
+};
+
+/// Takes the mesh, its connectivity and unit face normals (#F; zero for degenerate faces, which
+/// never join a region by growing); gives the regions grown across edges whose faces' normals
+/// differ by less than max_normal_angle_deg (curved ones limited by curved_region_faces). Reads
+/// no edge labels, so it may run beside segment_edges().
 /// \throws InvalidInput if an option is out of range.
+GrownRegions grow_feature_regions(const Mesh& mesh, const Connectivity& connectivity,
+                                  const std::vector<Vec3>& face_normals,
+                                  const FeatureSegmentationOptions& options = {});
+
+/// Takes the mesh, its connectivity, unit face normals (#F), the regions grow_feature_regions()
+/// gave for them with the same options, and the edge-vertex labels of segment_edges (#V);
+/// gives the patches: bands set apart, tiny patches absorbed, the rest merged, vertices
+/// labelled.
+/// \throws InvalidInput if an option is out of range.
+FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& connectivity,
+                                     const std::vector<Vec3>& face_normals, GrownRegions regions,
+                                     const std::vector<std::uint8_t>& is_edge_vertex,
+                                     const FeatureSegmentationOptions& options = {});
+
+/// Both steps on one thread: grow_feature_regions(), then segment_features() of its regions.
 FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& connectivity,
                                      const std::vector<Vec3>& face_normals,
                                      const std::vector<std::uint8_t>& is_edge_vertex,
