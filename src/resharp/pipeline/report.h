@@ -13,12 +13,14 @@ namespace resharp {
 
 /// The stages in the order restore() runs them. The paper's Table 1 groups them as edge-based
 /// segmentation (Curvature, EdgeSegmentation), feature-based segmentation
-/// (FeatureSegmentation) and edge and corner restoration (the rest).
+/// (FeatureSegmentation) and edge and corner restoration (the rest). With a second thread, the
+/// feature regions grow beside Curvature and EdgeSegmentation, and FeatureSegmentation holds
+/// only the wait for them.
 enum class Stage {
     MeshBuilding,         ///< adjacency, diagnostics, normals
     Curvature,            ///< local height intensity
-    EdgeSegmentation,     ///< k-means, refinement; on 2+ threads also region growing, beside
-    FeatureSegmentation,  ///< region growing (on 1 thread), bands, tiny patches, merging
+    EdgeSegmentation,     ///< k-means and refinement
+    FeatureSegmentation,  ///< region growing (2+ threads: beside, waited for), bands, merging
     Classification,       ///< edge and corner triangles
     FeatureNormals,       ///< eq. 5.1
     VertexMoves,          ///< near-surface meshes: vertices onto their fitted sides

@@ -207,34 +207,31 @@ Detection detect_bands_calling(const Mesh& mesh, Connectivity connectivity,
     d.connectivity = std::move(connectivity);
     StageClock clock(d.stage_time, options.stop);
     clock.run(Stage::MeshBuilding, [&] { d.normals = surface_normals(mesh, d.connectivity); });
+    GrownRegions regions;
+    auto grow = [&] {
+        regions = grow_feature_regions(mesh, d.connectivity, d.normals.face, options.features);
+    };
+    // The feature regions read only the face normals, and their growth is mostly serial: with a
+    // second thread they grow beside the curvatures and the edge segmentation, and a thread
+    // those leave idle takes them. If a stage throws (cancelled), the group's destructor
+    // cancels and waits for the growth before `regions` and `d` go.
+    const bool beside_allowed = tbb::this_task_arena::max_concurrency() >= 2;
+    tbb::task_group beside;
+    if (beside_allowed) beside.run(grow);
     PrincipalCurvatures curvatures;
     clock.run(Stage::Curvature, [&] {
         curvatures = estimate_principal_curvatures(mesh, d.connectivity, d.normals.vertex);
     });
     after_curvature();
-    GrownRegions regions;
-    auto grow = [&] {
-        regions = grow_feature_regions(mesh, d.connectivity, d.normals.face, options.features);
-    };
-    auto find_edges = [&] {
+    clock.run(Stage::EdgeSegmentation, [&] {
         d.edges = segment_edges(mesh, d.connectivity, curvatures, d.normals.face, options.edges);
-    };
-    if (tbb::this_task_arena::max_concurrency() < 2) {
-        clock.run(Stage::EdgeSegmentation, find_edges);
-        clock.run(Stage::FeatureSegmentation, grow);
-    } else {
-        // The feature regions read no edge labels: they grow beside the edge segmentation, whose
-        // stage time then holds theirs. Both are mostly serial; a thread left idle by one takes
-        // the other (or the placement measurement after_curvature() started). If the edge
-        // segmentation throws, the group's destructor cancels and waits for the growth.
-        clock.run(Stage::EdgeSegmentation, [&] {
-            tbb::task_group beside;
-            beside.run(grow);
-            find_edges();
-            beside.wait();
-        });
-    }
+    });
     clock.run(Stage::FeatureSegmentation, [&] {
+        if (beside_allowed) {
+            beside.wait();
+        } else {
+            grow();
+        }
         d.features = segment_features(mesh, d.connectivity, d.normals.face, std::move(regions),
                                       d.edges.is_edge, options.features);
     });
