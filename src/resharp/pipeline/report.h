@@ -14,7 +14,7 @@ namespace resharp {
 /// The stages in the order restore() runs them. The paper's Table 1 groups them as edge-based
 /// segmentation (Curvature, EdgeSegmentation), feature-based segmentation
 /// (FeatureSegmentation) and edge and corner restoration (the rest). With a second thread, the
-/// feature regions grow beside Curvature and EdgeSegmentation, and FeatureSegmentation holds
+/// feature regions grow beside EdgeSegmentation, and FeatureSegmentation holds
 /// only the wait for them.
 enum class Stage {
     MeshBuilding,         ///< adjacency, diagnostics, normals

@@ -211,17 +211,18 @@ Detection detect_bands_calling(const Mesh& mesh, Connectivity connectivity,
     auto grow = [&] {
         regions = grow_feature_regions(mesh, d.connectivity, d.normals.face, options.features);
     };
-    // The feature regions read only the face normals, and their growth is mostly serial: with a
-    // second thread they grow beside the curvatures and the edge segmentation, and a thread
-    // those leave idle takes them. If a stage throws (cancelled), the group's destructor
-    // cancels and waits for the growth before `regions` and `d` go.
-    const bool beside_allowed = tbb::this_task_arena::max_concurrency() >= 2;
-    tbb::task_group beside;
-    if (beside_allowed) beside.run(grow);
     PrincipalCurvatures curvatures;
     clock.run(Stage::Curvature, [&] {
         curvatures = estimate_principal_curvatures(mesh, d.connectivity, d.normals.vertex);
     });
+    // The feature regions read only the face normals, and their growth is mostly serial: with a
+    // second thread they grow beside the edge segmentation. Started before after_curvature()'s
+    // work, so that an idle thread, which takes the oldest task, takes them first: the edge
+    // segmentation and the growth are the longer chains. If a stage throws (cancelled), the
+    // group's destructor cancels and waits for the growth before `regions` and `d` go.
+    const bool beside_allowed = tbb::this_task_arena::max_concurrency() >= 2;
+    tbb::task_group beside;
+    if (beside_allowed) beside.run(grow);
     after_curvature();
     clock.run(Stage::EdgeSegmentation, [&] {
         d.edges = segment_edges(mesh, d.connectivity, curvatures, d.normals.face, options.edges);
