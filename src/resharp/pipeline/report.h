@@ -14,13 +14,13 @@ namespace resharp {
 /// The stages in the order restore() runs them. The paper's Table 1 groups them as edge-based
 /// segmentation (Curvature, EdgeSegmentation), feature-based segmentation
 /// (FeatureSegmentation) and edge and corner restoration (the rest). With a second thread, the
-/// feature regions grow beside EdgeSegmentation, and FeatureSegmentation holds
-/// only the wait for them.
+/// edge segmentation runs beside the feature regions' growth, and EdgeSegmentation holds only
+/// the wait for it.
 enum class Stage {
     MeshBuilding,         ///< adjacency, diagnostics, normals
     Curvature,            ///< local height intensity
-    EdgeSegmentation,     ///< k-means and refinement
-    FeatureSegmentation,  ///< region growing (2+ threads: beside, waited for), bands, merging
+    EdgeSegmentation,     ///< k-means and refinement (2+ threads: the wait for them)
+    FeatureSegmentation,  ///< region growing, bands, tiny patches, merging
     Classification,       ///< edge and corner triangles
     FeatureNormals,       ///< eq. 5.1
     VertexMoves,          ///< near-surface meshes: vertices onto their fitted sides

@@ -207,32 +207,36 @@ Detection detect_bands_calling(const Mesh& mesh, Connectivity connectivity,
     d.connectivity = std::move(connectivity);
     StageClock clock(d.stage_time, options.stop);
     clock.run(Stage::MeshBuilding, [&] { d.normals = surface_normals(mesh, d.connectivity); });
-    GrownRegions regions;
-    auto grow = [&] {
-        regions = grow_feature_regions(mesh, d.connectivity, d.normals.face, options.features);
-    };
     PrincipalCurvatures curvatures;
     clock.run(Stage::Curvature, [&] {
         curvatures = estimate_principal_curvatures(mesh, d.connectivity, d.normals.vertex);
     });
-    // The feature regions read only the face normals, and their growth is mostly serial: with a
-    // second thread they grow beside the edge segmentation. Started before after_curvature()'s
-    // work, so that an idle thread, which takes the oldest task, takes them first: the edge
-    // segmentation and the growth are the longer chains. If a stage throws (cancelled), the
-    // group's destructor cancels and waits for the growth before `regions` and `d` go.
-    const bool beside_allowed = tbb::this_task_arena::max_concurrency() >= 2;
-    tbb::task_group beside;
-    if (beside_allowed) beside.run(grow);
-    after_curvature();
-    clock.run(Stage::EdgeSegmentation, [&] {
+    GrownRegions regions;
+    auto grow = [&] {
+        regions = grow_feature_regions(mesh, d.connectivity, d.normals.face, options.features);
+    };
+    auto find_edges = [&] {
         d.edges = segment_edges(mesh, d.connectivity, curvatures, d.normals.face, options.edges);
-    });
+    };
+    if (tbb::this_task_arena::max_concurrency() < 2) {
+        after_curvature();
+        clock.run(Stage::EdgeSegmentation, find_edges);
+        clock.run(Stage::FeatureSegmentation, grow);
+    } else {
+        // The edge segmentation and the growth of the feature regions read neither's result, and
+        // both are mostly serial: the edges go to a second thread while this one grows the
+        // regions. Spawned before after_curvature()'s work, so that the idle thread, which
+        // takes the oldest task, takes them first; were this thread to wait on a task while
+        // that work is still queued, it would take that work up itself, and the growth and the
+        // edges are the chains the rest waits for. If the growth throws (cancelled), the
+        // group's destructor cancels and waits for the edges before `d` goes.
+        tbb::task_group beside;
+        beside.run(find_edges);
+        after_curvature();
+        clock.run(Stage::FeatureSegmentation, grow);
+        clock.run(Stage::EdgeSegmentation, [&] { beside.wait(); });
+    }
     clock.run(Stage::FeatureSegmentation, [&] {
-        if (beside_allowed) {
-            beside.wait();
-        } else {
-            grow();
-        }
         d.features = segment_features(mesh, d.connectivity, d.normals.face, std::move(regions),
                                       d.edges.is_edge, options.features);
     });
