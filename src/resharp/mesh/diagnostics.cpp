@@ -126,6 +126,11 @@ std::vector<bool> find_degenerate_faces(const Mesh& mesh) {
 }
 
 MeshDiagnostics diagnose(const Mesh& mesh, const Connectivity& c) {
+    return diagnose(mesh, c, find_duplicate_faces(mesh, c));
+}
+
+MeshDiagnostics diagnose(const Mesh& mesh, const Connectivity& c,
+                         const DuplicateFaces& duplicates) {
     MeshDiagnostics d;
     std::vector<Index> inconsistent, nonmanifold;
     for_each_halfedge_without_twin(c, [&](Index h) {
@@ -146,7 +151,6 @@ MeshDiagnostics diagnose(const Mesh& mesh, const Connectivity& c) {
     });
     d.inconsistent_edges = distinct_edges(mesh, inconsistent);
     d.nonmanifold_edges = distinct_edges(mesh, nonmanifold);
-    const DuplicateFaces duplicates = find_duplicate_faces(mesh, c);
     d.duplicate_faces = duplicates.removed + duplicates.opposite_pairs;
 
     // The components (a union-find, serial) beside the per-face and per-vertex counts.

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "resharp/mesh/connectivity.h"
+#include "resharp/mesh/duplicate_faces.h"
 #include "resharp/mesh/mesh.h"
 
 namespace resharp {
@@ -32,5 +33,9 @@ std::vector<bool> find_degenerate_faces(const Mesh& mesh);
 
 /// Inspects the mesh; never throws.
 MeshDiagnostics diagnose(const Mesh& mesh, const Connectivity& connectivity);
+
+/// diagnose(), given what find_duplicate_faces() found on the same mesh and connectivity.
+MeshDiagnostics diagnose(const Mesh& mesh, const Connectivity& connectivity,
+                         const DuplicateFaces& duplicates);
 
 }  // namespace resharp

@@ -405,34 +405,46 @@ public:
         : input_(input), options_(options), result_(result), report_(result.report) {}
 
     void run() {
-        Connectivity connectivity;
-        DuplicateFaces duplicates;
         const StageTimer building;
-        connectivity = build_connectivity(input_);
-        report_.input = diagnose(input_, connectivity);
-        if (options_.repair.remove_duplicate_faces && report_.input.duplicate_faces > 0) {
-            duplicates = find_duplicate_faces(input_, connectivity);
-        }
+        Connectivity connectivity = build_connectivity(input_);
+        const DuplicateFaces found = find_duplicate_faces(input_, connectivity);
+        DuplicateFaces duplicates;
+        if (options_.repair.remove_duplicate_faces) duplicates = found;
         report_.duplicate_faces_removed = duplicates.removed;
         report_.opposite_face_pairs = duplicates.opposite_pairs;
+        // The input's defects only fill the report. With a second thread they are counted
+        // beside the stages after the detection (the restoration's serial stretches leave that
+        // thread idle), on the input's connectivity, which the detection then holds; unless
+        // duplicates are removed, and a connectivity of the faces kept replaces the input's.
+        const bool count_beside =
+            duplicates.removed == 0 && tbb::this_task_arena::max_concurrency() >= 2;
+        if (!count_beside) report_.input = diagnose(input_, connectivity, found);
         const Mesh working = duplicates.removed > 0 ? keep_faces(input_, duplicates.kept) : Mesh{};
         const Mesh& mesh = duplicates.removed > 0 ? working : input_;
         if (duplicates.removed > 0) {
             connectivity = {};  // the input's goes first: one connectivity alive at a time
             connectivity = build_connectivity(mesh);
         }
-        const auto building_time = building.elapsed();
-        report_.stage_time[static_cast<std::size_t>(Stage::MeshBuilding)] += building_time;
+        report_.stage_time[static_cast<std::size_t>(Stage::MeshBuilding)] += building.elapsed();
 
         PlacementChoice placement;
         Detection detection;
         measure_placement_and_detect(mesh, std::move(connectivity), placement, detection);
         add_times(detection.stage_time);
+        // After `detection`: if a stage throws, the group's destructor waits for the count
+        // before the connectivity it reads goes.
+        tbb::task_group beside;
+        if (count_beside) {
+            beside.run([&] { report_.input = diagnose(input_, detection.connectivity, found); });
+        }
         if (placement.placement == VertexPlacement::Exact) {
             take(restore_detected(mesh, detection, duplicates));
         } else {
-            restore_near(mesh, std::move(detection), placement, duplicates);
+            restore_near(mesh, detection, placement, duplicates);
         }
+        const StageTimer waiting;
+        beside.wait();
+        report_.stage_time[static_cast<std::size_t>(Stage::MeshBuilding)] += waiting.elapsed();
         if (duplicates.removed > 0) {
             for (Index& f : result_.source_face) f = duplicates.kept[f];
         }
@@ -567,7 +579,7 @@ private:
     /// the input itself; moves whose faces do harm are given up and the rest tried again.
     /// Bound: options.max_harm_rounds rounds, each but the last giving up at least one move;
     /// past it, or where harm remains that no move explains, the exact path on the input.
-    void restore_near(const Mesh& mesh, Detection input, const PlacementChoice& choice,
+    void restore_near(const Mesh& mesh, Detection& input, const PlacementChoice& choice,
                       const DuplicateFaces& duplicates) {
         const InputSurface surface = input.surface(mesh);
         std::optional<Detection> smoothed;
