@@ -41,8 +41,10 @@ std::string vertices_summary(const RestoreReport& r) {
 }  // namespace
 
 std::string summarize(const RestoreReport& r, const std::string& input, const std::string& output) {
-    const double edge_time = seconds(r.time(Stage::Curvature) + r.time(Stage::EdgeSegmentation));
-    const double feature_time = seconds(r.time(Stage::FeatureSegmentation));
+    // One figure for both segmentations: on two threads they run at once (pipeline/report.h).
+    const double segmentation_time =
+        seconds(r.time(Stage::Curvature) + r.time(Stage::EdgeSegmentation) +
+                r.time(Stage::FeatureSegmentation));
     const double restore_time =
         seconds(r.time(Stage::Classification) + r.time(Stage::FeatureNormals) +
                 r.time(Stage::SharpPoints) + r.time(Stage::VertexMoves) + r.time(Stage::Guard) +
@@ -66,9 +68,8 @@ std::string summarize(const RestoreReport& r, const std::string& input, const st
          << (r.unchanged_reason.empty() ? std::string()
                                         : "; output unchanged: " + std::string(r.unchanged_reason))
          << ". Input defects: " << describe_defects(r.input) << ". Time " << seconds(r.total_time)
-         << " s (mesh " << seconds(r.time(Stage::MeshBuilding)) << ", edge segmentation "
-         << edge_time << ", feature segmentation " << feature_time << ", restoration "
-         << restore_time << ").\n";
+         << " s (mesh " << seconds(r.time(Stage::MeshBuilding)) << ", segmentation "
+         << segmentation_time << ", restoration " << restore_time << ").\n";
     return text.str();
 }
 
