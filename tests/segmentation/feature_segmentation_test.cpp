@@ -55,18 +55,22 @@ TEST(FeatureSegmentation, BoxHasSixFacesAndItsBandsApart) {
     }
 }
 
-TEST(FeatureSegmentation, GrownRegionsAreEveryFacesAndOfThisMesh) {
+TEST(FeatureSegmentation, GrownRegionsCoverEveryFaceAndAreCheckedAgainstTheMesh) {
     const test::SampledShape shape = test::sampled_box();
     const Mesh& mesh = shape.mesh;
     const Connectivity c = build_connectivity(mesh);
     const auto fn = face_normals(mesh);
-    GrownRegions grown = grow_feature_regions(mesh, c, fn);
+    const GrownRegions grown = grow_feature_regions(mesh, c, fn);
     ASSERT_EQ(grown.face_region.size(), mesh.face_count());
     for (Index r : grown.face_region) EXPECT_LT(r, grown.count);
     EXPECT_EQ(segment(mesh).grown_patches, grown.count);
-    grown.face_region.pop_back();  // regions of a mesh with a face less
     const std::vector<std::uint8_t> no_edges(mesh.vertex_count(), 0);
-    EXPECT_THROW(segment_features(mesh, c, fn, std::move(grown), no_edges), InvalidInput);
+    GrownRegions short_one = grown;
+    short_one.face_region.pop_back();  // regions of a mesh with a face less
+    EXPECT_THROW(segment_features(mesh, c, fn, short_one, no_edges), InvalidInput);
+    GrownRegions beyond = grown;
+    beyond.face_region[0] = static_cast<Index>(grown.count);  // a region the count leaves out
+    EXPECT_THROW(segment_features(mesh, c, fn, beyond, no_edges), InvalidInput);
 }
 
 TEST(FeatureSegmentation, LabelsEveryVertexOfEveryShapeByItsSurface) {

@@ -730,6 +730,13 @@ FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& conne
                            " grown regions' faces for " + std::to_string(mesh.face_count()) +
                            " faces");
     }
+    const auto beyond = std::find_if(regions.face_region.begin(), regions.face_region.end(),
+                                     [&](Index r) { return r >= regions.count; });
+    if (beyond != regions.face_region.end()) {
+        throw InvalidInput("feature segmentation: face " +
+                           std::to_string(beyond - regions.face_region.begin()) + " in region " +
+                           std::to_string(*beyond) + " of " + std::to_string(regions.count));
+    }
     FeatureSegmentation s;
     s.grown_patches = regions.count;
     std::vector<Index> region = std::move(regions.face_region);

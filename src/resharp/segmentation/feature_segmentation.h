@@ -81,7 +81,8 @@ GrownRegions grow_feature_regions(const Mesh& mesh, const Connectivity& connecti
 /// gave for them with the same options, and the edge-vertex labels of segment_edges (#V);
 /// gives the patches: bands set apart, tiny patches absorbed, the rest merged, vertices
 /// labelled.
-/// \throws InvalidInput if an option is out of range.
+/// \throws InvalidInput if an option is out of range, or the regions are not one per face of
+/// this mesh, each below their count.
 FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& connectivity,
                                      const std::vector<Vec3>& face_normals, GrownRegions regions,
                                      const std::vector<std::uint8_t>& is_edge_vertex,
