@@ -136,8 +136,8 @@ TEST(NearSurface, MidpointVerticesOfCurvedFacesDoNotMoveOntoChords) {
         after += a;
     }
     EXPECT_LE(farther, 40u);
-    EXPECT_LT(after, 1.03 * before)
-        << before / input.vertex_count() << " -> " << after / input.vertex_count() << " mm";
+    EXPECT_LT(after, 1.03 * before) << before / static_cast<double>(input.vertex_count()) << " -> "
+                                    << after / static_cast<double>(input.vertex_count()) << " mm";
 }
 
 TEST(NearSurface, ExactModeMovesNothing) {
