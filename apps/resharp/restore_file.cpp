@@ -68,10 +68,14 @@ void write_html(io::AtomicFile& file, const std::string& title, const Mesh& inpu
 
 RestoreReport restore_file(const RestoreTargets& targets, RestoreOptions options,
                            io::Encoding encoding) {
-    const Mesh input = weld(io::read_mesh(targets.input));
+    Mesh input = weld(io::read_mesh(targets.input));
     Outputs outputs(targets);
-    options.keep_segmentation = outputs.segments.has_value() || outputs.html.has_value();
-    const RestoreResult result = restore(input, options);
+    // The segments file and the page show the input beside the result; else restore() may
+    // take it (peak memory).
+    const bool input_read_after = outputs.segments.has_value() || outputs.html.has_value();
+    options.keep_segmentation = input_read_after;
+    const RestoreResult result =
+        input_read_after ? restore(input, options) : restore(std::move(input), options);
 
     const io::WriteOptions write_options{.encoding = encoding};
     io::write_mesh(outputs.mesh, result.mesh, write_options);

@@ -103,6 +103,32 @@ TEST(DoNoHarm, EveryTriangleTwiceRestoresLikeTheCleanMesh) {
     EXPECT_EQ(restore(doubled, keep).report.duplicate_faces_removed, 0u);
 }
 
+TEST(DoNoHarm, AMeshGivenUpRestoresAsACopyAndComesBackWholeWhenCancelled) {
+    const test::SampledShape shape = test::sampled_drilled_plate();
+    Mesh doubled = shape.mesh;
+    for (std::size_t f = 0; f < shape.mesh.face_count(); f += 7)
+        doubled.triangles.push_back(shape.mesh.triangles[f]);
+    const RestoreResult copied = restore(doubled);
+    ASSERT_GT(copied.report.duplicate_faces_removed, 0u);
+    Mesh given = doubled;
+    const RestoreResult taken = restore(std::move(given));
+    EXPECT_EQ(taken.mesh.positions, copied.mesh.positions);
+    EXPECT_EQ(taken.mesh.triangles, copied.mesh.triangles);
+    EXPECT_EQ(taken.source_face, copied.source_face);
+    EXPECT_EQ(taken.report.duplicate_faces_removed, copied.report.duplicate_faces_removed);
+    EXPECT_EQ(taken.report.edge_points_inserted, copied.report.edge_points_inserted);
+    // Cancelled after the duplicates were dropped (restore() asks only after that): the input
+    // comes back whole, and so does the mesh given up.
+    int asked = 0;
+    RestoreOptions cancel;
+    cancel.stop.cancelled = [&] { return ++asked >= 2; };
+    Mesh cancelled = doubled;
+    const RestoreResult back = restore(std::move(cancelled), cancel);
+    EXPECT_TRUE(back.report.output_unchanged);
+    EXPECT_EQ(back.mesh.triangles, doubled.triangles);
+    EXPECT_EQ(cancelled.triangles, doubled.triangles);  // NOLINT(bugprone-use-after-move)
+}
+
 TEST(DoNoHarm, OppositeFacesAreKeptAndCounted) {
     const test::SampledShape shape = test::sampled_box();
     Mesh sheet = shape.mesh;

@@ -82,4 +82,33 @@ Mesh keep_faces(const Mesh& mesh, const std::vector<Index>& kept) {
     return out;
 }
 
+DroppedFaces drop_faces(Mesh& mesh, const std::vector<Index>& kept) {
+    DroppedFaces dropped;
+    std::size_t next = 0;  // in `kept`
+    for (Index f = 0; f < mesh.face_count(); ++f) {
+        if (next < kept.size() && kept[next] == f) {
+            mesh.triangles[next++] = mesh.triangles[f];  // next <= f: not read again
+        } else {
+            dropped.index.push_back(f);
+            dropped.triangle.push_back(mesh.triangles[f]);
+        }
+    }
+    mesh.triangles.resize(next);
+    return dropped;
+}
+
+void put_back_faces(Mesh& mesh, const DroppedFaces& dropped) {
+    const std::size_t kept = mesh.face_count();
+    mesh.triangles.resize(kept + dropped.index.size());
+    // From the back, so that every kept face moves to a place no face still to move holds.
+    std::size_t from = kept, back = dropped.index.size();
+    for (std::size_t to = mesh.triangles.size(); to-- > 0;) {
+        if (back > 0 && dropped.index[back - 1] == to) {
+            mesh.triangles[to] = dropped.triangle[--back];
+        } else {
+            mesh.triangles[to] = mesh.triangles[--from];
+        }
+    }
+}
+
 }  // namespace resharp

@@ -27,4 +27,17 @@ DuplicateFaces find_duplicate_faces(const Mesh& mesh, const Connectivity& connec
 /// The mesh with only the faces `kept` (ascending), in that order; vertices unchanged.
 Mesh keep_faces(const Mesh& mesh, const std::vector<Index>& kept);
 
+/// The faces drop_faces() took out of a mesh, to put back.
+struct DroppedFaces {
+    std::vector<Index> index;        ///< their places in the mesh, ascending
+    std::vector<Triangle> triangle;  ///< per dropped face
+};
+
+/// keep_faces() in place, for a mesh whose owner gives it up: no second mesh is made. Takes
+/// the faces to keep (ascending); gives the others.
+DroppedFaces drop_faces(Mesh& mesh, const std::vector<Index>& kept);
+
+/// Undoes drop_faces(): the dropped faces go back to their places.
+void put_back_faces(Mesh& mesh, const DroppedFaces& dropped);
+
 }  // namespace resharp

@@ -401,15 +401,26 @@ std::size_t face_points_inserted(const BandRestoration& r) {
 /// restore() on one mesh: the one place that sequences the stages and fills the report.
 class Pipeline {
 public:
-    Pipeline(const Mesh& input, const RestoreOptions& options, RestoreResult& result)
-        : input_(input), options_(options), result_(result), report_(result.report) {}
+    /// `owned`: the input itself where its caller gave it up (restore(Mesh&&)), else null;
+    /// `dropped` receives the duplicate faces taken out of it.
+    Pipeline(const Mesh& input, Mesh* owned, const RestoreOptions& options, RestoreResult& result,
+             DroppedFaces& dropped)
+        : input_(input),
+          input_faces_(input.face_count()),
+          owned_(owned),
+          dropped_(dropped),
+          options_(options),
+          result_(result),
+          report_(result.report) {}
 
     void run() {
         const StageTimer building;
         Connectivity connectivity = build_connectivity(input_);
         const DuplicateFaces found = find_duplicate_faces(input_, connectivity);
-        DuplicateFaces duplicates;
-        if (options_.repair.remove_duplicate_faces) duplicates = found;
+        // With removal off the mesh is restored as if it had none (the report still counts
+        // them). A reference, not a copy: `kept` holds an index per face.
+        const DuplicateFaces none;
+        const DuplicateFaces& duplicates = options_.repair.remove_duplicate_faces ? found : none;
         report_.duplicate_faces_removed = duplicates.removed;
         report_.opposite_face_pairs = duplicates.opposite_pairs;
         // The input's defects only fill the report. With a second thread they are counted
@@ -419,8 +430,12 @@ public:
         const bool count_beside =
             duplicates.removed == 0 && tbb::this_task_arena::max_concurrency() >= 2;
         if (!count_beside) report_.input = diagnose(input_, connectivity, found);
-        const Mesh working = duplicates.removed > 0 ? keep_faces(input_, duplicates.kept) : Mesh{};
-        const Mesh& mesh = duplicates.removed > 0 ? working : input_;
+        // Without duplicates the input is the mesh restored; with them, a copy without them,
+        // or the input itself less them where its caller gave it up (no second mesh).
+        const bool copy = duplicates.removed > 0 && !owned_;
+        const Mesh working = copy ? keep_faces(input_, duplicates.kept) : Mesh{};
+        if (duplicates.removed > 0 && owned_) dropped_ = drop_faces(*owned_, duplicates.kept);
+        const Mesh& mesh = copy ? working : input_;
         if (duplicates.removed > 0) {
             connectivity = {};  // the input's goes first: one connectivity alive at a time
             connectivity = build_connectivity(mesh);
@@ -629,7 +644,7 @@ private:
     std::vector<T> on_input_faces(std::vector<T> values, const DuplicateFaces& duplicates,
                                   T none) const {
         if (duplicates.removed == 0) return values;
-        std::vector<T> all(input_.face_count(), none);
+        std::vector<T> all(input_faces_, none);
         for (std::size_t i = 0; i < duplicates.kept.size(); ++i)
             all[duplicates.kept[i]] = values[i];
         return all;
@@ -678,7 +693,10 @@ private:
         if (r.rounds_exhausted) report_.unchanged_reason = "harm rounds exhausted";
     }
 
-    const Mesh& input_;
+    const Mesh& input_;  ///< less its duplicates once dropped from `owned_`
+    std::size_t input_faces_;
+    Mesh* owned_;
+    DroppedFaces& dropped_;
     const RestoreOptions& options_;
     RestoreResult& result_;
     RestoreReport& report_;
@@ -693,9 +711,8 @@ void give_back_input(const Mesh& input, RestoreResult& result, std::string_view 
     result.report.unchanged_reason = reason;
 }
 
-}  // namespace
-
-RestoreResult restore(const Mesh& input, const RestoreOptions& options) {
+/// restore() of `input`; `owned`: the same mesh where the caller gave it up, else null.
+RestoreResult restore_mesh(const Mesh& input, Mesh* owned, const RestoreOptions& options) {
     validate_mesh(input);
     validate_options(options);
     RestoreResult result;
@@ -704,15 +721,27 @@ RestoreResult restore(const Mesh& input, const RestoreOptions& options) {
     report.input_triangles = input.face_count();
     const StageTimer total;
     tbb::task_arena arena(options.threads == 0 ? tbb::task_arena::automatic : options.threads);
+    DroppedFaces dropped;
     try {
-        arena.execute([&] { Pipeline(input, options, result).run(); });
+        arena.execute([&] { Pipeline(input, owned, options, result, dropped).run(); });
     } catch (const Cancelled&) {
+        if (owned) put_back_faces(*owned, dropped);
         give_back_input(input, result, "cancelled");
     }
     report.total_time = total.elapsed();
     report.output_vertices = result.mesh.vertex_count();
     report.output_triangles = result.mesh.face_count();
     return result;
+}
+
+}  // namespace
+
+RestoreResult restore(const Mesh& input, const RestoreOptions& options) {
+    return restore_mesh(input, nullptr, options);
+}
+
+RestoreResult restore(Mesh&& input, const RestoreOptions& options) {
+    return restore_mesh(input, &input, options);
 }
 
 }  // namespace resharp
