@@ -108,9 +108,6 @@ WeldedMesh weld_mapped(const TriangleSoup& soup) {
         }
         mesh.triangles.push_back(welded);
     }
-    // Grown by doubling, the positions may hold twice what they use; the mesh lives on through
-    // the whole restoration (peak memory), so it keeps only what it uses.
-    mesh.positions.shrink_to_fit();
     return {std::move(mesh), std::move(new_index)};
 }
 
