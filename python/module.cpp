@@ -70,7 +70,7 @@ py::dict restore_arrays(py::handle vertices, py::handle faces, const py::kwargs&
             mesh = std::move(welded.mesh);
             welded_vertex = std::move(welded.vertex_of_point);
         }
-        result = restore(mesh, call.options);
+        result = restore(std::move(mesh), call.options);  // nothing reads it after
     }
     interrupt.rethrow_if_interrupted();
     py::dict out;
