@@ -16,7 +16,7 @@
 
 #include "commands.h"
 #include "exit_status.h"
-#include "malloc_arenas.h"
+#include "malloc_tuning.h"
 #include "resharp/core/errors.h"
 #include "resharp/io/format.h"
 
@@ -248,7 +248,7 @@ void run_batch(const std::vector<std::string>& inputs, const RestoreTargets& fol
     const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
     const std::size_t workers =
         std::min(items.size(), settings.jobs > 0 ? std::size_t(settings.jobs) : cores);
-    limit_malloc_arenas(workers);
+    tune_malloc(workers);
     std::vector<ItemResult> results(items.size());
     Progress progress(items.size(), !settings.quiet && ::isatty(STDERR_FILENO));
     std::atomic<std::size_t> next{0};

@@ -9,7 +9,7 @@
 
 #include "batch.h"
 #include "commands.h"
-#include "malloc_arenas.h"
+#include "malloc_tuning.h"
 #include "report_json.h"
 #include "resharp/core/errors.h"
 #include "resharp/pipeline/option_table.h"
@@ -114,7 +114,7 @@ void run_restore(const RestoreArguments& args, const CLI::App& command) {
         return;
     }
     check_single_file(command);
-    limit_malloc_arenas(1);
+    tune_malloc(1);
     RestoreTargets targets = args.targets;
     targets.input = args.inputs.front();
     const RestoreReport report = restore_file(targets, options, encoding);

@@ -1,4 +1,4 @@
-#include "malloc_arenas.h"
+#include "malloc_tuning.h"
 
 #include <algorithm>
 #include <climits>
@@ -9,10 +9,13 @@
 
 namespace resharp::cli {
 
-void limit_malloc_arenas(std::size_t files_at_once) {
+void tune_malloc(std::size_t files_at_once) {
 #if defined(__GLIBC__)
-    // A refused value (none is: any positive count is taken) only leaves glibc's default.
     mallopt(M_ARENA_MAX, static_cast<int>(std::clamp<std::size_t>(files_at_once, 1, INT_MAX)));
+    // Blocks below 32 MiB (the most glibc takes: 4 MiB * sizeof(long)) come from the heap, and
+    // the heap is never trimmed.
+    mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024);
+    mallopt(M_TRIM_THRESHOLD, INT_MAX);
 #else
     (void)files_at_once;
 #endif
