@@ -16,8 +16,8 @@ namespace resharp::cli {
 /// - Freed memory kept for reuse. By default glibc maps blocks from 128 KiB up (the bound
 ///   rising with the blocks freed) and returns them when freed, and gives back the top of its
 ///   heap, so each stage's arrays were faulted in again page by page (impeller: 32,000 page
-///   faults a run); kept, restore() took 4 to 15 % less time on the four benchmark parts, for
-///   up to 6 % more peak memory.
+///   faults a run); kept, restore() took 4 to 11 % less time on the four benchmark parts on two
+///   threads (medians of three comparisons), for up to 6.4 % more peak memory.
 void tune_malloc(std::size_t files_at_once);
 
 }  // namespace resharp::cli
