@@ -126,7 +126,7 @@ namespace {
 
 /// Invariant of the adjacency: twins are mutual, run the other way along the same edge, and
 /// exist exactly on manifold edges.
-bool has_symmetric_twins(const Mesh& mesh, const Connectivity& c) {
+[[maybe_unused]] bool has_symmetric_twins(const Mesh& mesh, const Connectivity& c) {
     for (Index h = 0; h < c.twin.size(); ++h) {
         const Index t = c.twin[h];
         if ((t != kNoIndex) != (c.edge_kind[h] == EdgeKind::Manifold)) return false;
