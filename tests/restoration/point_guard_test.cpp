@@ -166,7 +166,7 @@ struct JitteredPlate {
     test::SampledShape shape = test::sampled_drilled_plate();
     Detection d = detect_bands(shape.mesh, build_connectivity(shape.mesh), {});
     SharpPoints points =
-        place_sharp_points(shape.mesh, d.connectivity, d.normals.face, d.bands, d.feature_normals);
+        place_sharp_points(shape.mesh, *d.connectivity, d.normals.face, d.bands, d.feature_normals);
 
     JitteredPlate(unsigned seed, double spread) {
         std::mt19937 random(seed);

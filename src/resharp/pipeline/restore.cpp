@@ -137,6 +137,13 @@ std::vector<std::uint8_t> changed_faces(const PointSlots& before, const PointSlo
            a.report.repairs == b.report.repairs;
 }
 
+/// Whether two splits are the same in every field.
+[[maybe_unused]] bool same_split(const SplitMesh& a, const SplitMesh& b) {
+    return a.mesh.positions == b.mesh.positions && a.mesh.triangles == b.mesh.triangles &&
+           a.source_face == b.source_face && a.point_of_new_vertex == b.point_of_new_vertex &&
+           a.split_faces == b.split_faces && a.altered_faces == b.altered_faces;
+}
+
 /// The input as its own split: no face replaced.
 SplitMesh unchanged(const Mesh& mesh) {
     SplitMesh out;
@@ -184,16 +191,17 @@ namespace {
 /// detect_bands()'s last two stages, on the segmentations `d` holds.
 void classify_and_fit_normals(const Mesh& mesh, Detection& d, const RestoreOptions& options,
                               StageClock& clock) {
+    const Connectivity& connectivity = *d.connectivity;
     clock.run(Stage::Classification, [&] {
-        d.bands = classify_bands(mesh, d.connectivity, d.normals.face, d.edges.is_edge,
+        d.bands = classify_bands(mesh, connectivity, d.normals.face, d.edges.is_edge,
                                  d.features.face_patch, d.features.vertex_patch, options.bands);
     });
     clock.run(Stage::FeatureNormals, [&] {
         d.feature_normals =
-            feature_normals(mesh, d.connectivity, d.normals.face, d.features.face_patch,
+            feature_normals(mesh, connectivity, d.normals.face, d.features.face_patch,
                             d.features.vertex_patch, d.bands, options.normals);
         d.bands =
-            drop_smooth_crossings(mesh, d.connectivity, d.bands, d.feature_normals, options.bands);
+            drop_smooth_crossings(mesh, connectivity, d.bands, d.feature_normals, options.bands);
     });
 }
 
@@ -201,22 +209,23 @@ void classify_and_fit_normals(const Mesh& mesh, Detection& d, const RestoreOptio
 /// curvatures run in parallel, the segmentations mostly on one thread, so that work started
 /// then finds a second thread free.
 template <class AfterCurvature>
-Detection detect_bands_calling(const Mesh& mesh, Connectivity connectivity,
+Detection detect_bands_calling(const Mesh& mesh, std::shared_ptr<const Connectivity> shared,
                                const RestoreOptions& options, AfterCurvature&& after_curvature) {
     Detection d;
-    d.connectivity = std::move(connectivity);
+    d.connectivity = std::move(shared);
+    const Connectivity& connectivity = *d.connectivity;
     StageClock clock(d.stage_time, options.stop);
-    clock.run(Stage::MeshBuilding, [&] { d.normals = surface_normals(mesh, d.connectivity); });
+    clock.run(Stage::MeshBuilding, [&] { d.normals = surface_normals(mesh, connectivity); });
     PrincipalCurvatures curvatures;
     clock.run(Stage::Curvature, [&] {
-        curvatures = estimate_principal_curvatures(mesh, d.connectivity, d.normals.vertex);
+        curvatures = estimate_principal_curvatures(mesh, connectivity, d.normals.vertex);
     });
     GrownRegions regions;
     auto grow = [&] {
-        regions = grow_feature_regions(mesh, d.connectivity, d.normals.face, options.features);
+        regions = grow_feature_regions(mesh, connectivity, d.normals.face, options.features);
     };
     auto find_edges = [&] {
-        d.edges = segment_edges(mesh, d.connectivity, curvatures, d.normals.face, options.edges);
+        d.edges = segment_edges(mesh, connectivity, curvatures, d.normals.face, options.edges);
     };
     if (tbb::this_task_arena::max_concurrency() < 2) {
         after_curvature();
@@ -237,7 +246,7 @@ Detection detect_bands_calling(const Mesh& mesh, Connectivity connectivity,
         clock.run(Stage::EdgeSegmentation, [&] { beside.wait(); });
     }
     clock.run(Stage::FeatureSegmentation, [&] {
-        d.features = segment_features(mesh, d.connectivity, d.normals.face, std::move(regions),
+        d.features = segment_features(mesh, connectivity, d.normals.face, std::move(regions),
                                       d.edges.is_edge, options.features);
     });
     classify_and_fit_normals(mesh, d, options, clock);
@@ -246,17 +255,22 @@ Detection detect_bands_calling(const Mesh& mesh, Connectivity connectivity,
 
 }  // namespace
 
-Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const RestoreOptions& options) {
+Detection detect_bands(const Mesh& mesh, std::shared_ptr<const Connectivity> connectivity,
+                       const RestoreOptions& options) {
     return detect_bands_calling(mesh, std::move(connectivity), options, [] {});
+}
+
+Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const RestoreOptions& options) {
+    return detect_bands(mesh, std::make_shared<const Connectivity>(std::move(connectivity)),
+                        options);
 }
 
 namespace {
 
 /// check_harm() of `split` (of `input`) against `input`, or against the reference input as
-/// moves_as_split() makes the split one of it.
-HarmReport held_against(const InputSurface& input, const HarmReference* reference,
-                        const SplitMesh& split, const RestoreOptions& options,
-                        std::span<const std::uint8_t> changed) {
+/// moves_as_split() makes the split one of it; `split` comes back as it was.
+HarmReport held_against(const InputSurface& input, const HarmReference* reference, SplitMesh& split,
+                        const RestoreOptions& options, std::span<const std::uint8_t> changed) {
     if (!reference) {
         HarmReport harm = check_harm(input, split, options.harm, changed);
         RESHARP_EXPENSIVE_ASSERT(changed.empty() ||
@@ -264,9 +278,13 @@ HarmReport held_against(const InputSurface& input, const HarmReference* referenc
                                      check_harm(input, split, options.harm).harmful_faces);
         return harm;
     }
-    return check_harm(reference->input,
-                      moves_as_split(reference->input.mesh, reference->moves, split), options.harm,
-                      changed);
+    [[maybe_unused]] const SplitMesh before = detail::kExpensiveAssertions ? split : SplitMesh{};
+    const VertexMoves& moves = reference->moves;
+    split = moves_as_split(reference->input.mesh, moves, std::move(split));
+    HarmReport harm = check_harm(reference->input, split, options.harm, changed);
+    split = split_of_moved_mesh(moves, std::move(split));
+    RESHARP_EXPENSIVE_ASSERT(same_split(split, before));
+    return harm;
 }
 
 }  // namespace
@@ -280,7 +298,7 @@ Detection detect_bands_after_moves(const Mesh& mesh, const Detection& before,
     d.features = before.features;
     StageClock clock(d.stage_time, options.stop);
     clock.run(Stage::MeshBuilding, [&] {
-        d.normals = surface_normals_after_moves(mesh, d.connectivity, input.normals, moved);
+        d.normals = surface_normals_after_moves(mesh, *d.connectivity, input.normals, moved);
     });
     classify_and_fit_normals(mesh, d, options, clock);
     return d;
@@ -444,13 +462,15 @@ public:
 
         PlacementChoice placement;
         Detection detection;
-        measure_placement_and_detect(mesh, std::move(connectivity), placement, detection);
+        measure_placement_and_detect(mesh,
+                                     std::make_shared<const Connectivity>(std::move(connectivity)),
+                                     placement, detection);
         add_times(detection.stage_time);
         // After `detection`: if a stage throws, the group's destructor waits for the count
         // before the connectivity it reads goes.
         tbb::task_group beside;
         if (count_beside) {
-            beside.run([&] { report_.input = diagnose(input_, detection.connectivity, found); });
+            beside.run([&] { report_.input = diagnose(input_, *detection.connectivity, found); });
         }
         if (placement.placement == VertexPlacement::Exact) {
             take(restore_detected(mesh, detection, duplicates));
@@ -505,7 +525,8 @@ private:
     /// STL file, issue 11's speed budget); with one, it runs first, so that its buffers are
     /// gone before the detection allocates (the peak-memory budget). The detection stays on
     /// the calling thread, which is the one StopWhen::cancelled is promised to be asked from.
-    void measure_placement_and_detect(const Mesh& mesh, Connectivity connectivity,
+    void measure_placement_and_detect(const Mesh& mesh,
+                                      std::shared_ptr<const Connectivity> connectivity,
                                       PlacementChoice& placement, Detection& detection) {
         if (tbb::this_task_arena::max_concurrency() < 2) {
             placement = choose_placement(mesh);
@@ -578,7 +599,7 @@ private:
         rule.scope = FitScope::Patches;
         for (int round = 0; round < kMidpointPatchRounds; ++round) {
             const Mesh current = moved_mesh(surface.mesh, moves);
-            smoothed = detect_bands(current, Connectivity(input.connectivity), options_);
+            smoothed = detect_bands(current, input.connectivity, options_);
             add_times(smoothed->stage_time);
             clock.run(Stage::VertexMoves, [&] {
                 moves = plan_vertex_moves(smoothed->surface(current), from,
@@ -586,6 +607,11 @@ private:
                                           options);
             });
         }
+        // Only the segmentations are read after (detect_bands_after_moves()); the rest goes
+        // before the restoration allocates (peak memory).
+        smoothed->normals = {};
+        smoothed->bands = {};
+        smoothed->feature_normals = {};
         return moves;
     }
 
@@ -599,6 +625,10 @@ private:
         const InputSurface surface = input.surface(mesh);
         std::optional<Detection> smoothed;
         VertexMoves moves = plan_moves(surface, input, choice, smoothed);
+        // Nothing but the fallback below reads the input's bands and feature normals: they go
+        // before the rounds allocate, and the fallback makes them anew (peak memory).
+        input.bands = {};
+        input.feature_normals = {};
         const Detection& segmented = smoothed ? *smoothed : input;
         if (options_.keep_segmentation) result_.segmentation.move_planned = moves.moved;
         for (int round = 0; round < options_.max_harm_rounds && moves.moved_count > 0; ++round) {
@@ -623,6 +653,8 @@ private:
             moves = std::move(fewer);
         }
         report_.moves_undone += moves.moved_count;
+        StageClock clock(report_.stage_time, options_.stop);
+        classify_and_fit_normals(mesh, input, options_, clock);
         take(restore_detected(mesh, input, duplicates));
     }
 

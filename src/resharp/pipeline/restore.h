@@ -6,6 +6,7 @@
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -88,7 +89,9 @@ RestoreResult restore(Mesh&& input, const RestoreOptions& options = {});
 
 /// The first half of restore(), from mesh building to the feature normals (§3-§5.1).
 struct Detection {
-    Connectivity connectivity;
+    /// Shared by the detections of meshes with the same faces (the input and its moved copies
+    /// in near-surface restoration), which would otherwise each hold a copy (peak memory).
+    std::shared_ptr<const Connectivity> connectivity;
     SurfaceNormals normals;
     EdgeSegmentation edges;
     FeatureSegmentation features;
@@ -96,19 +99,22 @@ struct Detection {
     FeatureNormals feature_normals;
     std::array<std::chrono::nanoseconds, kStageCount> stage_time{};  ///< of the stages run
 
-    InputSurface surface(const Mesh& mesh) const { return {mesh, connectivity, normals}; }
+    InputSurface surface(const Mesh& mesh) const { return {mesh, *connectivity, normals}; }
 };
 
 /// Takes the mesh and its connectivity; runs the stages up to the feature normals.
 /// \throws Cancelled when options.stop fires between two stages; InvalidInput for options
 ///         out of range.
+Detection detect_bands(const Mesh& mesh, std::shared_ptr<const Connectivity> connectivity,
+                       const RestoreOptions& options);
+/// detect_bands() of a connectivity no other detection shares.
 Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const RestoreOptions& options);
 
 /// detect_bands() on `mesh`, the input with the vertices flagged in `moved` (#V) moved, its
-/// faces the same (near-surface restoration): the segmentations carried over from `before` (a
-/// patch is a set of faces; moving vertices within their cells keeps them), the normals made
-/// anew where the moves change them (the rest are the input's), classification and feature
-/// normals made anew on `mesh`.
+/// faces the same (near-surface restoration): the connectivity shared with `before` and the
+/// segmentations carried over from it (a patch is a set of faces; moving vertices within their
+/// cells keeps them), the normals made anew where the moves change them (the rest are the
+/// input's), classification and feature normals made anew on `mesh`.
 /// \throws as detect_bands().
 Detection detect_bands_after_moves(const Mesh& mesh, const Detection& before,
                                    const InputSurface& input, std::span<const std::uint8_t> moved,
