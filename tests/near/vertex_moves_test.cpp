@@ -330,54 +330,6 @@ TEST(VertexMoves, WithoutMovesOfFacesGivesThoseVerticesBack) {
     }
 }
 
-TEST(VertexMoves, AsSplitOfTheInputMovedVerticesComeAsNewOnes) {
-    const Planned p =
-        plan(SmallPart::PocketedBlock, sim::Mesher::SurfaceNets, VertexPlacement::Near);
-    const Mesh moved = moved_mesh(p.mesh, p.moves);
-    SplitMesh same;
-    same.mesh = moved;
-    for (Index f = 0; f < moved.face_count(); ++f) same.source_face.push_back(f);
-    const SplitMesh relative = moves_as_split(p.mesh, p.moves, same);
-    ASSERT_EQ(relative.mesh.vertex_count(), p.mesh.vertex_count() + p.moves.moved_count);
-    EXPECT_TRUE(std::equal(p.mesh.positions.begin(), p.mesh.positions.end(),
-                           relative.mesh.positions.begin()));
-    for (Index f = 0; f < moved.face_count(); ++f) {
-        for (int k = 0; k < 3; ++k) {
-            const Index v = moved.triangles[f][k];
-            EXPECT_EQ(relative.mesh.positions[relative.mesh.triangles[f][k]], moved.positions[v]);
-            EXPECT_EQ(relative.mesh.triangles[f][k] >= p.mesh.vertex_count(), p.moves.moved[v]);
-        }
-    }
-}
-
-TEST(VertexMoves, AsSplitOfTheInputAndBackGivesTheSplitAgain) {
-    const Planned p =
-        plan(SmallPart::PocketedBlock, sim::Mesher::SurfaceNets, VertexPlacement::Near);
-    const Mesh moved = moved_mesh(p.mesh, p.moves);
-    const Detection d = detect_bands(moved, build_connectivity(moved), {});
-    const SplitMesh split = restore_bands(d.surface(moved), d.bands, d.feature_normals, {}).output;
-    ASSERT_GT(split.split_faces, 0U);
-    ASSERT_GT(p.moves.moved_count, 0U);
-    const SplitMesh relative = moves_as_split(p.mesh, p.moves, split);
-    ASSERT_EQ(relative.mesh.vertex_count(), split.mesh.vertex_count() + p.moves.moved_count);
-    EXPECT_TRUE(std::includes(relative.altered_faces.begin(), relative.altered_faces.end(),
-                              split.altered_faces.begin(), split.altered_faces.end()));
-    EXPECT_GT(relative.altered_faces.size(), split.altered_faces.size());
-    for (Index o = 0; o < split.mesh.face_count(); ++o) {
-        for (int k = 0; k < 3; ++k) {
-            EXPECT_EQ(relative.mesh.positions[relative.mesh.triangles[o][k]],
-                      split.mesh.positions[split.mesh.triangles[o][k]]);
-        }
-    }
-    const SplitMesh back = split_of_moved_mesh(p.moves, relative);
-    EXPECT_EQ(back.mesh.positions, split.mesh.positions);
-    EXPECT_EQ(back.mesh.triangles, split.mesh.triangles);
-    EXPECT_EQ(back.source_face, split.source_face);
-    EXPECT_EQ(back.point_of_new_vertex, split.point_of_new_vertex);
-    EXPECT_EQ(back.split_faces, split.split_faces);
-    EXPECT_EQ(back.altered_faces, split.altered_faces);
-}
-
 TEST(VertexMoves, RefusesABadGrid) {
     const Mesh mesh = test::small_part(SmallPart::PocketedBlock);
     const Detection d = detect_bands(mesh, build_connectivity(mesh), {});

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <vector>
+
 #include "resharp/core/errors.h"
 #include "resharp/eval/self_intersections.h"
 #include "resharp/pipeline/restore.h"
@@ -42,6 +45,26 @@ TEST(HarmCheck, PiecesFoldedOntoEachOtherAreHarm) {
     EXPECT_GE(r.folded, 1u);
     EXPECT_FALSE(r.is_harmless());
     EXPECT_THROW(check_harm(s.surface(), out, {.fold_angle_deg = 80.0}), InvalidInput);
+}
+
+TEST(HarmCheck, AFaceTurnedByAMovedVertexIsJudgedWhereTheMoveIsGiven) {
+    // The strip as its own split, b0 moved where a piece turned over in the test above: its two
+    // faces are judged only through the flag, their ids unchanged.
+    const test::Strip s = test::make_strip();
+    SplitMesh moved;
+    moved.mesh = s.mesh;
+    moved.mesh.positions[2] = Vec3(-2.0, 3.0, 0.5);
+    moved.source_face = {0, 1};
+    const std::vector<std::uint8_t> b0_moved{0, 0, 1, 0};
+    const HarmReport r = check_harm(s.surface(), moved, {}, {}, b0_moved);
+    EXPECT_GE(r.turned, 1u);
+    EXPECT_EQ(r.harmful_faces, (std::vector<Index>{0, 1}));
+    EXPECT_TRUE(check_harm(s.surface(), moved).is_harmless());  // no face altered, none judged
+    const std::vector<std::uint8_t> a0_moved{1, 0, 0, 0};       // a0's faces: face 0 alone
+    EXPECT_EQ(check_harm(s.surface(), moved, {}, {}, a0_moved).harmful_faces,
+              (std::vector<Index>{0}));
+    EXPECT_THROW(check_harm(s.surface(), moved, {}, {}, std::vector<std::uint8_t>{1}),
+                 InvalidInput);
 }
 
 /// The strip with a triangle hanging from b0 into the space between face 0 and the sharp edge,

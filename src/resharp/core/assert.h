@@ -26,12 +26,3 @@ namespace resharp::detail {
 #else
 #define RESHARP_EXPENSIVE_ASSERT(expr) ((void)0)
 #endif
-
-namespace resharp::detail {
-/// Whether RESHARP_EXPENSIVE_ASSERT checks: for the copies only such a check reads.
-#ifdef RESHARP_ENABLE_EXPENSIVE_ASSERTS
-inline constexpr bool kExpensiveAssertions = true;
-#else
-inline constexpr bool kExpensiveAssertions = false;
-#endif
-}  // namespace resharp::detail

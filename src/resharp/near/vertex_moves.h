@@ -114,15 +114,4 @@ Mesh moved_mesh(const Mesh& mesh, const VertexMoves& moves);
 VertexMoves without_moves_of(const Mesh& mesh, const VertexMoves& moves,
                              const std::vector<Index>& faces);
 
-/// The split of the moved mesh, given up, as a split of the input itself: the input's vertices
-/// first, unchanged, then the moved vertices' new places (in vertex order), then the split's new
-/// points; faces as in `split_of_moved`, their corners renumbered. The harm check then holds
-/// every moved face, split or not, against the input surface it replaces: its altered_faces are
-/// the split faces and the faces with a moved corner. Its point_of_new_vertex is the moved
-/// split's (the check does not read it). split_of_moved_mesh() gives the split back.
-SplitMesh moves_as_split(const Mesh& input, const VertexMoves& moves, SplitMesh split_of_moved);
-
-/// moves_as_split() undone: the split of the moved mesh `as_split` was made of, given it up.
-SplitMesh split_of_moved_mesh(const VertexMoves& moves, SplitMesh as_split);
-
 }  // namespace resharp

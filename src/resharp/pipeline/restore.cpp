@@ -137,13 +137,6 @@ std::vector<std::uint8_t> changed_faces(const PointSlots& before, const PointSlo
            a.report.repairs == b.report.repairs;
 }
 
-/// Whether two splits are the same in every field.
-[[maybe_unused]] bool same_split(const SplitMesh& a, const SplitMesh& b) {
-    return a.mesh.positions == b.mesh.positions && a.mesh.triangles == b.mesh.triangles &&
-           a.source_face == b.source_face && a.point_of_new_vertex == b.point_of_new_vertex &&
-           a.split_faces == b.split_faces && a.altered_faces == b.altered_faces;
-}
-
 /// The input as its own split: no face replaced.
 SplitMesh unchanged(const Mesh& mesh) {
     SplitMesh out;
@@ -267,10 +260,11 @@ Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const Restor
 
 namespace {
 
-/// check_harm() of `split` (of `input`) against `input`, or against the reference input as
-/// moves_as_split() makes the split one of it; `split` comes back as it was.
-HarmReport held_against(const InputSurface& input, const HarmReference* reference, SplitMesh& split,
-                        const RestoreOptions& options, std::span<const std::uint8_t> changed) {
+/// check_harm() of `split` (of `input`) against `input`, or against the reference input, of
+/// which `input` is a copy with vertices moved.
+HarmReport held_against(const InputSurface& input, const HarmReference* reference,
+                        const SplitMesh& split, const RestoreOptions& options,
+                        std::span<const std::uint8_t> changed) {
     if (!reference) {
         HarmReport harm = check_harm(input, split, options.harm, changed);
         RESHARP_EXPENSIVE_ASSERT(changed.empty() ||
@@ -278,13 +272,7 @@ HarmReport held_against(const InputSurface& input, const HarmReference* referenc
                                      check_harm(input, split, options.harm).harmful_faces);
         return harm;
     }
-    [[maybe_unused]] const SplitMesh before = detail::kExpensiveAssertions ? split : SplitMesh{};
-    const VertexMoves& moves = reference->moves;
-    split = moves_as_split(reference->input.mesh, moves, std::move(split));
-    HarmReport harm = check_harm(reference->input, split, options.harm, changed);
-    split = split_of_moved_mesh(moves, std::move(split));
-    RESHARP_EXPENSIVE_ASSERT(same_split(split, before));
-    return harm;
+    return check_harm(reference->input, split, options.harm, changed, reference->moves.moved);
 }
 
 }  // namespace

@@ -143,7 +143,8 @@ struct BandRestoration {
 
 /// What restore_bands() holds its split against when that is not the surface it splits: the
 /// input whose vertices were moved to make that surface, and the moves (near-surface
-/// restoration). The split is checked as moves_as_split() makes it a split of the input.
+/// restoration). The split is checked against the input, the moved vertices as new ones
+/// (check_harm()'s `moved`).
 struct HarmReference {
     const InputSurface& input;
     const VertexMoves& moves;

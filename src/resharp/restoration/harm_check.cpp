@@ -158,19 +158,21 @@ struct Scratch {
 /// from 0 in output order.
 class SplitFaces {
 public:
-    /// Takes the split (source faces ascending) and the input mesh.
-    SplitFaces(const SplitMesh& output, const Mesh& input) : number_(input.face_count(), kNoIndex) {
+    /// Takes the split (source faces ascending), the input mesh, the altered faces (ascending:
+    /// the split's own, or with the faces of moved corners) and the moved flags (#V or empty).
+    SplitFaces(const SplitMesh& output, const Mesh& input, const std::vector<Index>& altered,
+               [[maybe_unused]] std::span<const std::uint8_t> moved)
+        : number_(input.face_count(), kNoIndex) {
         const Index* source = output.source_face.data();
         const Index count = static_cast<Index>(output.source_face.size());
-        const std::size_t altered = output.altered_faces.size();
-        face_.reserve(altered);
-        first_output_.reserve(altered);
-        first_piece_.reserve(altered + 1);
+        face_.reserve(altered.size());
+        first_output_.reserve(altered.size());
+        first_piece_.reserve(altered.size() + 1);
         // The split faces are the altered ones: a split face's pieces are the run of its
         // output faces, and every face before it that is not altered is one output face, so
         // its run starts where the runs before it put it.
         Index extra = 0;  // output faces beyond one per input face, before f's
-        for (Index f : output.altered_faces) {
+        for (Index f : altered) {
             const Index o = f + extra;
             Index end = o + 1;
             while (end < count && source[end] == f) ++end;
@@ -182,7 +184,7 @@ public:
             extra += end - o - 1;
         }
         first_piece_.push_back(piece_count_);
-        RESHARP_EXPENSIVE_ASSERT(is_as_scanned(output, input));
+        RESHARP_EXPENSIVE_ASSERT(is_as_scanned(output, input, moved));
     }
 
     std::size_t size() const { return face_.size(); }
@@ -198,14 +200,19 @@ public:
 
 private:
     /// Whether the split faces are those a scan of every output face finds: the runs of more
-    /// than one face, and the runs of one whose corners are not their source's.
-    bool is_as_scanned(const SplitMesh& output, const Mesh& input) const {
+    /// than one face, and the runs of one whose corners are not their source's or are moved.
+    bool is_as_scanned(const SplitMesh& output, const Mesh& input,
+                       std::span<const std::uint8_t> moved) const {
         std::vector<Index> scanned;
         const auto& source = output.source_face;
         for (std::size_t o = 0; o < source.size();) {
             std::size_t end = o + 1;
             while (end < source.size() && source[end] == source[o]) ++end;
-            if (end > o + 1 || output.mesh.triangles[o] != input.triangles[source[o]]) {
+            const Triangle& t = output.mesh.triangles[o];
+            const bool moves = !moved.empty() && std::any_of(t.begin(), t.end(), [&](Index v) {
+                return v < moved.size() && moved[v];
+            });
+            if (end > o + 1 || t != input.triangles[source[o]] || moves) {
                 scanned.push_back(source[o]);
             }
             o = end;
@@ -220,16 +227,37 @@ private:
     Index piece_count_ = 0;
 };
 
+/// The input faces split in `output` or left whole there with a moved corner, ascending.
+std::vector<Index> altered_with_moves(const SplitMesh& output,
+                                      std::span<const std::uint8_t> moved) {
+    std::vector<Index> altered;
+    altered.reserve(output.altered_faces.size());
+    auto split = output.altered_faces.begin();
+    const auto split_end = output.altered_faces.end();
+    for (Index o = 0; o < output.source_face.size(); ++o) {
+        const Index f = output.source_face[o];
+        if (!altered.empty() && altered.back() == f) continue;
+        while (split != split_end && *split < f) ++split;
+        const Triangle& t = output.mesh.triangles[o];
+        const bool moves =
+            std::any_of(t.begin(), t.end(), [&](Index v) { return v < moved.size() && moved[v]; });
+        if (moves || (split != split_end && *split == f)) altered.push_back(f);
+    }
+    return altered;
+}
+
 class HarmChecker {
 public:
     HarmChecker(const InputSurface& input, const SplitMesh& output, const HarmCheckOptions& options,
-                std::span<const std::uint8_t> changed)
+                std::span<const std::uint8_t> changed, std::span<const std::uint8_t> moved)
         : input_(input),
           output_(output),
+          moved_(moved),
           min_fold_cosine_(std::cos(options.fold_angle_deg * std::numbers::pi / 180.0)),
           half_fold_cosine_(std::cos(options.fold_angle_deg * std::numbers::pi / 360.0)),
           check_crossings_(options.check_crossings),
-          split_(output, input.mesh),
+          split_(output, input.mesh,
+                 moved.empty() ? output.altered_faces : altered_with_moves(output, moved), moved),
           piece_normal_(split_.piece_count()),
           split_box_(split_.size()),
           harmful_(split_.size(), 0) {
@@ -341,7 +369,6 @@ private:
     /// Marks the vertices of judged split faces around which the output is a simple fan (see
     /// is_simple_fan()): only pairs with a piece of a judged face ask.
     void find_simple_fans() {
-        const Index input_vertices = static_cast<Index>(input_.mesh.vertex_count());
         const Index output_vertices = static_cast<Index>(output_.mesh.vertex_count());
         simple_fan_.assign(output_vertices, 0);
         std::vector<std::uint8_t> wanted(output_vertices, 0);
@@ -354,11 +381,10 @@ private:
         tbb::parallel_for(Index{0}, output_vertices, [&](Index v) {
             if (!wanted[v]) return;
             Fan fan;
-            if (v < input_vertices) {
+            if (is_input_vertex(v)) {
                 add_input_fan(v, fan);
             } else {
-                for (Index k = around.first[v - input_vertices];
-                     k < around.first[v - input_vertices + 1]; ++k) {
+                for (Index k = around.first[v]; k < around.first[v + 1]; ++k) {
                     const Index o = around.output[k];
                     fan.add(output_.mesh.triangles[o], v, piece_normal_[piece_of(o)]);
                 }
@@ -391,21 +417,26 @@ private:
         return split_.first_piece(i) + (o - split_.first_output(i));
     }
 
-    /// Per new vertex (output vertex #V in + i): the pieces that hold it, as output faces,
-    /// entries first[i] .. first[i + 1] - 1 (CSR, like Connectivity's rings).
+    /// Whether output vertex v is an input vertex in its input place: not a new point, not
+    /// moved. Every face around a new vertex is split or moved, so its pieces are its fan.
+    bool is_input_vertex(Index v) const {
+        return v < input_.mesh.vertex_count() && (moved_.empty() || !moved_[v]);
+    }
+
+    /// Per new vertex v (not is_input_vertex()): the pieces that hold it, as output faces,
+    /// entries first[v] .. first[v + 1] - 1 (CSR, like Connectivity's rings; none for others).
     struct PiecesAround {
         std::vector<Index> first, output;
     };
     PiecesAround pieces_around_new_vertices() const {
-        const Index input_vertices = static_cast<Index>(input_.mesh.vertex_count());
         PiecesAround around;
-        around.first.assign(output_.mesh.vertex_count() - input_vertices + 1, 0);
+        around.first.assign(output_.mesh.vertex_count() + 1, 0);
         auto for_each_new_corner = [&](auto&& visit) {
             for (Index i = 0; i < split_.size(); ++i) {
                 if (!described_[i]) continue;
                 for (Index k = 0; k < split_.piece_count(i); ++k) {
                     for (Index v : piece_triangle(i, k)) {
-                        if (v >= input_vertices) visit(v - input_vertices, i, k);
+                        if (!is_input_vertex(v)) visit(v, i, k);
                     }
                 }
             }
@@ -509,8 +540,8 @@ private:
         ensure_boxes(candidates);
         const auto& x = output_.mesh.positions;
         for (Index v : t) {
-            if (v < input_.mesh.vertex_count() ? turned_at_input_vertex(v, n)
-                                               : turned_at_point(x[v], n, f, k, candidates)) {
+            if (is_input_vertex(v) ? turned_at_input_vertex(v, n)
+                                   : turned_at_point(x[v], n, f, k, candidates)) {
                 return true;
             }
         }
@@ -740,7 +771,7 @@ private:
         int above = 0, below = 0, added = 0;
         for (Index k = 0; k < split_.piece_count(i); ++k) {
             for (int m = 0; m < 3; ++m) {
-                if (own[k]->id[m] < input_.mesh.vertex_count()) continue;
+                if (is_input_vertex(own[k]->id[m])) continue;
                 const double height = n.dot(*own[k]->p[m]) - offset;
                 above += height > tolerance;
                 below += height < -tolerance;
@@ -765,6 +796,7 @@ private:
 
     const InputSurface& input_;
     const SplitMesh& output_;
+    std::span<const std::uint8_t> moved_;  ///< #V or empty: input vertices the output moved
     double min_fold_cosine_;
     double half_fold_cosine_;  ///< of half the fold angle
     bool check_crossings_;
@@ -785,7 +817,8 @@ private:
 }  // namespace
 
 HarmReport check_harm(const InputSurface& input, const SplitMesh& output,
-                      const HarmCheckOptions& options, std::span<const std::uint8_t> changed) {
+                      const HarmCheckOptions& options, std::span<const std::uint8_t> changed,
+                      std::span<const std::uint8_t> moved) {
     if (!(options.fold_angle_deg > 90.0 && options.fold_angle_deg <= 180.0)) {
         throw InvalidInput("harm check: fold angle must lie in (90, 180] degrees");
     }
@@ -793,9 +826,13 @@ HarmReport check_harm(const InputSurface& input, const SplitMesh& output,
         throw InvalidInput("harm check: " + std::to_string(changed.size()) + " change flags for " +
                            std::to_string(input.mesh.face_count()) + " faces");
     }
+    if (!moved.empty() && moved.size() != input.mesh.vertex_count()) {
+        throw InvalidInput("harm check: " + std::to_string(moved.size()) + " move flags for " +
+                           std::to_string(input.mesh.vertex_count()) + " vertices");
+    }
     RESHARP_EXPENSIVE_ASSERT(output.source_face.size() == output.mesh.face_count());
     RESHARP_EXPENSIVE_ASSERT(std::is_sorted(output.source_face.begin(), output.source_face.end()));
-    return HarmChecker(input, output, options, changed).run();
+    return HarmChecker(input, output, options, changed, moved).run();
 }
 
 }  // namespace resharp

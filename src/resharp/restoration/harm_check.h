@@ -35,9 +35,11 @@ struct HarmReport {
 };
 
 /// Takes the input surface and its split; checks the pieces of every split face, the faces
-/// the split lists as altered (faces left whole are the input's own and are not judged). A face
-/// of one piece whose corners are not the input face's is judged as a split face: near-surface
-/// restoration gives its moved vertices as new ones and lists its faces (near/vertex_moves.h).
+/// the split lists as altered (faces left whole are the input's own and are not judged).
+/// Near-surface restoration splits a copy of the input with vertices moved (near/vertex_moves.h)
+/// and passes `moved` (#V): the input vertices whose place in the split is not their input
+/// place. They count as new vertices, and every face with one as a split face, judged against
+/// the input surface it replaces; empty: none moved.
 /// A fault between a piece and another split face's piece blames both faces.
 ///
 /// The crossing check (c) tests a piece against the output faces of the input faces within two
@@ -55,10 +57,11 @@ struct HarmReport {
 /// faces within two rings of a changed face are judged: a face's verdict depends on nothing but
 /// its own pieces and those of the faces within two rings of it, so elsewhere it stands (no
 /// harm). The counts then cover the judged faces alone. Empty: every split face is judged.
-/// \throws InvalidInput if the fold angle is not in (90, 180], or `changed` is neither empty
-///         nor one flag per input face.
+/// \throws InvalidInput if the fold angle is not in (90, 180], `changed` is neither empty nor
+///         one flag per input face, or `moved` neither empty nor one flag per input vertex.
 HarmReport check_harm(const InputSurface& input, const SplitMesh& output,
                       const HarmCheckOptions& options = {},
-                      std::span<const std::uint8_t> changed = {});
+                      std::span<const std::uint8_t> changed = {},
+                      std::span<const std::uint8_t> moved = {});
 
 }  // namespace resharp
