@@ -369,6 +369,7 @@ private:
     /// Marks the vertices of judged split faces around which the output is a simple fan (see
     /// is_simple_fan()): only pairs with a piece of a judged face ask.
     void find_simple_fans() {
+        const Index input_vertices = static_cast<Index>(input_.mesh.vertex_count());
         const Index output_vertices = static_cast<Index>(output_.mesh.vertex_count());
         simple_fan_.assign(output_vertices, 0);
         std::vector<std::uint8_t> wanted(output_vertices, 0);
@@ -381,10 +382,11 @@ private:
         tbb::parallel_for(Index{0}, output_vertices, [&](Index v) {
             if (!wanted[v]) return;
             Fan fan;
-            if (is_input_vertex(v)) {
+            if (v < input_vertices) {
                 add_input_fan(v, fan);
             } else {
-                for (Index k = around.first[v]; k < around.first[v + 1]; ++k) {
+                for (Index k = around.first[v - input_vertices];
+                     k < around.first[v - input_vertices + 1]; ++k) {
                     const Index o = around.output[k];
                     fan.add(output_.mesh.triangles[o], v, piece_normal_[piece_of(o)]);
                 }
@@ -394,7 +396,8 @@ private:
     }
 
     /// Adds to `fan` the output faces around input vertex v: its input faces left whole, and
-    /// the pieces of the split ones that hold v.
+    /// the pieces of the split ones that hold v (all of them if v moved: every face with a moved
+    /// corner counts as split).
     void add_input_fan(Index v, Fan& fan) const {
         for (Index g : input_.connectivity.faces_around(v)) {
             const Index j = split_.number(g);
@@ -423,20 +426,23 @@ private:
         return v < input_.mesh.vertex_count() && (moved_.empty() || !moved_[v]);
     }
 
-    /// Per new vertex v (not is_input_vertex()): the pieces that hold it, as output faces,
-    /// entries first[v] .. first[v + 1] - 1 (CSR, like Connectivity's rings; none for others).
+    /// Per new vertex (output vertex #V in + i): the pieces that hold it, as output faces,
+    /// entries first[i] .. first[i + 1] - 1 (CSR, like Connectivity's rings). A moved input
+    /// vertex's pieces are found through its faces instead (add_input_fan()): kept here, they
+    /// took 8 bytes per corner of every piece of a midpoint mesh, whose every vertex moves.
     struct PiecesAround {
         std::vector<Index> first, output;
     };
     PiecesAround pieces_around_new_vertices() const {
+        const Index input_vertices = static_cast<Index>(input_.mesh.vertex_count());
         PiecesAround around;
-        around.first.assign(output_.mesh.vertex_count() + 1, 0);
+        around.first.assign(output_.mesh.vertex_count() - input_vertices + 1, 0);
         auto for_each_new_corner = [&](auto&& visit) {
             for (Index i = 0; i < split_.size(); ++i) {
                 if (!described_[i]) continue;
                 for (Index k = 0; k < split_.piece_count(i); ++k) {
                     for (Index v : piece_triangle(i, k)) {
-                        if (!is_input_vertex(v)) visit(v, i, k);
+                        if (v >= input_vertices) visit(v - input_vertices, i, k);
                     }
                 }
             }
