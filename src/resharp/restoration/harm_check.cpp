@@ -1,5 +1,6 @@
 #include "resharp/restoration/harm_check.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
@@ -270,14 +271,19 @@ public:
         tbb::enumerable_thread_specific<Scratch> scratch(input_.mesh.vertex_count(),
                                                          input_.mesh.face_count());
         tbb::enumerable_thread_specific<HarmReport> sums;  // each thread's counts
-        tbb::parallel_for(std::size_t{0}, judged_list_.size(), [&](std::size_t k) {
-            const Index i = judged_list_[k];
-            const FaceVerdict verdict = judge(i, scratch.local());
+        // A thread's scratch and counts looked up once a range, not once a face.
+        using Range = tbb::blocked_range<std::size_t>;
+        tbb::parallel_for(Range(0, judged_list_.size()), [&](const Range& range) {
+            Scratch& local = scratch.local();
             HarmReport& sum = sums.local();
-            sum.turned += verdict.turned;
-            sum.folded += verdict.folded;
-            sum.crossing += verdict.crossing;
-            if (verdict.is_harmful()) mark_harmful(i);
+            for (std::size_t k = range.begin(); k != range.end(); ++k) {
+                const Index i = judged_list_[k];
+                const FaceVerdict verdict = judge(i, local);
+                sum.turned += verdict.turned;
+                sum.folded += verdict.folded;
+                sum.crossing += verdict.crossing;
+                if (verdict.is_harmful()) mark_harmful(i);
+            }
         });
         HarmReport report;
         for (const HarmReport& sum : sums) {
@@ -346,24 +352,15 @@ private:
         const auto& x = output_.mesh.positions;
         tbb::parallel_for(Index{0}, static_cast<Index>(split_.size()), [&](Index i) {
             if (!described_[i]) return;
+            Box3 box;
             for (Index k = 0; k < split_.piece_count(i); ++k) {
                 const Triangle& t = piece_triangle(i, k);
                 piece_normal_[split_.first_piece(i) + k] =
                     triangle_normal(x[t[0]], x[t[1]], x[t[2]]);
+                box.extend(x[t[0]]).extend(x[t[1]]).extend(x[t[2]]);
             }
-            split_box_[i] = OuterBox(pieces_box(i));
+            split_box_[i] = OuterBox(box);
         });
-    }
-
-    /// The box of split face i's pieces.
-    Box3 pieces_box(Index i) const {
-        const auto& x = output_.mesh.positions;
-        Box3 box;
-        for (Index k = 0; k < split_.piece_count(i); ++k) {
-            const Triangle& t = piece_triangle(i, k);
-            box.extend(x[t[0]]).extend(x[t[1]]).extend(x[t[2]]);
-        }
-        return box;
     }
 
     /// Marks the vertices of judged split faces around which the output is a simple fan (see
@@ -730,10 +727,16 @@ private:
                 continue;
             }
             if (g < f && judged_[j]) continue;  // (tested)
-            if (!split_box_[j].may_meet(box) || !pieces_box(j).intersects(box)) continue;
+            if (!split_box_[j].may_meet(box)) continue;
+            // The exact box of j's pieces decides, as their shapes give it.
+            const Index their_count = split_.piece_count(j);
+            std::array<std::optional<Shape>, 6> theirs;
+            Box3 their_box;
+            for (Index k = 0; k < their_count; ++k)
+                their_box.extend(theirs[k].emplace(piece_shape(j, k)).box);
+            if (!their_box.intersects(box)) continue;
             bool met = false;
-            for (Index k = 0; k < split_.piece_count(j); ++k)
-                met |= test_against(piece_shape(j, k));
+            for (Index k = 0; k < their_count; ++k) met |= test_against(*theirs[k]);
             if (met) mark_harmful(j);
         }
         return static_cast<std::uint32_t>(std::count(meets.begin(), meets.begin() + count, true));
