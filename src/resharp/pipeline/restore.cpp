@@ -272,7 +272,7 @@ HarmReport held_against(const InputSurface& input, const HarmReference* referenc
                                      check_harm(input, split, options.harm).harmful_faces);
         return harm;
     }
-    return check_harm(reference->input, split, options.harm, changed, reference->moves.moved);
+    return check_harm(reference->input, split, options.harm, changed, reference->moved);
 }
 
 }  // namespace
@@ -621,12 +621,17 @@ private:
         if (options_.keep_segmentation) result_.segmentation.move_planned = moves.moved;
         for (int round = 0; round < options_.max_harm_rounds && moves.moved_count > 0; ++round) {
             ++report_.move_rounds;
-            const Mesh moved = moved_mesh(mesh, moves);
+            // The moved mesh takes the planned places for the round, which reads only the
+            // flags, and gives them back after it: one copy of them alive, not two (peak memory).
+            Mesh moved;
+            moved.positions = std::move(moves.position);
+            moved.triangles = mesh.triangles;
             Detection detection =
                 detect_bands_after_moves(moved, segmented, surface, moves.moved, options_);
             add_times(detection.stage_time);
-            const HarmReference reference{surface, moves};
+            const HarmReference reference{surface, moves.moved};
             BandRestoration restored = restore_detected(moved, detection, duplicates, &reference);
+            moves.position = std::move(moved.positions);
             if (restored.rounds_exhausted) break;  // its unchanged moved mesh was not checked
             if (restored.unexplained_harm.empty()) {
                 take(std::move(restored));

@@ -13,7 +13,6 @@
 #include "resharp/mesh/connectivity.h"
 #include "resharp/mesh/geometry.h"
 #include "resharp/mesh/mesh.h"
-#include "resharp/near/vertex_moves.h"
 #include "resharp/pipeline/options.h"
 #include "resharp/pipeline/report.h"
 #include "resharp/restoration/band_classification.h"
@@ -142,12 +141,12 @@ struct BandRestoration {
 };
 
 /// What restore_bands() holds its split against when that is not the surface it splits: the
-/// input whose vertices were moved to make that surface, and the moves (near-surface
-/// restoration). The split is checked against the input, the moved vertices as new ones
-/// (check_harm()'s `moved`).
+/// input whose vertices were moved to make that surface, and the flags of the vertices moved
+/// (#V; near-surface restoration). The split is checked against the input, the moved vertices
+/// as new ones (check_harm()'s `moved`).
 struct HarmReference {
     const InputSurface& input;
-    const VertexMoves& moves;
+    std::span<const std::uint8_t> moved;
 };
 
 /// Takes the surface to split, its bands and the feature normals (#V) to place points with, and
