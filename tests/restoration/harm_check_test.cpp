@@ -93,6 +93,28 @@ TEST(HarmCheck, PiecesCuttingThroughANearbyFaceAreHarmUnlessTheCheckIsOff) {
     EXPECT_TRUE(check_harm(s.surface(), out, {.check_crossings = false}).is_harmless());
 }
 
+/// `s` with every position scaled by k about the origin.
+test::Strip scaled(test::Strip s, double k) {
+    for (Vec3& x : s.mesh.positions) x *= k;
+    s.rebuild();
+    return s;
+}
+
+TEST(HarmCheck, VerdictsHoldAtScalesFloatsCannotHold) {
+    // The check keeps each split face's box in floats, rounded outward (outer_box.h): beyond the
+    // floats' range (1e39) and among their subnormals (1e-40) too, the verdicts are those at 1.
+    for (double k : {1e-40, 1e-3, 1.0, 1e3, 1e39}) {
+        SCOPED_TRACE(k);
+        const test::Strip clean = scaled(test::make_strip(), k);
+        EXPECT_TRUE(
+            check_harm(clean.surface(), split_at(clean, k * Vec3(0, 0, 0.75))).is_harmless());
+        const test::Strip blocked = scaled(strip_with_blocker(), k);
+        const HarmReport r = check_harm(blocked.surface(), split_at(blocked, k * Vec3(0, 0, 0.75)));
+        EXPECT_GE(r.crossing, 1u);
+        EXPECT_EQ(r.turned, 0u);
+    }
+}
+
 TEST(HarmCheck, RestoreUndoesThePointWhosePiecesCrossAFace) {
     const test::Strip s = strip_with_blocker();
     RestoreOptions options;
