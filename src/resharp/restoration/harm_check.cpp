@@ -119,6 +119,11 @@ struct Scratch {
         : vertex_mark(vertex_count, 0), face_mark(face_count, 0) {}
 };
 
+/// Whether triangle t has a corner `moved` flags (an input vertex; empty flags: none moved).
+bool has_moved_corner(const Triangle& t, std::span<const std::uint8_t> moved) {
+    return std::any_of(t.begin(), t.end(), [&](Index v) { return v < moved.size() && moved[v]; });
+}
+
 /// The split faces of an output mesh, numbered in input order, and their pieces, numbered
 /// from 0 in output order.
 class SplitFaces {
@@ -174,10 +179,7 @@ private:
             std::size_t end = o + 1;
             while (end < source.size() && source[end] == source[o]) ++end;
             const Triangle& t = output.mesh.triangles[o];
-            const bool moves = !moved.empty() && std::any_of(t.begin(), t.end(), [&](Index v) {
-                return v < moved.size() && moved[v];
-            });
-            if (end > o + 1 || t != input.triangles[source[o]] || moves) {
+            if (end > o + 1 || t != input.triangles[source[o]] || has_moved_corner(t, moved)) {
                 scanned.push_back(source[o]);
             }
             o = end;
@@ -203,10 +205,8 @@ std::vector<Index> altered_with_moves(const SplitMesh& output,
         const Index f = output.source_face[o];
         if (!altered.empty() && altered.back() == f) continue;
         while (split != split_end && *split < f) ++split;
-        const Triangle& t = output.mesh.triangles[o];
-        const bool moves =
-            std::any_of(t.begin(), t.end(), [&](Index v) { return v < moved.size() && moved[v]; });
-        if (moves || (split != split_end && *split == f)) altered.push_back(f);
+        const bool split_here = split != split_end && *split == f;
+        if (split_here || has_moved_corner(output.mesh.triangles[o], moved)) altered.push_back(f);
     }
     return altered;
 }
