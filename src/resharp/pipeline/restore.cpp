@@ -613,10 +613,14 @@ private:
         const InputSurface surface = input.surface(mesh);
         std::optional<Detection> smoothed;
         VertexMoves moves = plan_moves(surface, input, choice, smoothed);
-        // Nothing but the fallback below reads the input's bands and feature normals: they go
-        // before the rounds allocate, and the fallback makes them anew (peak memory).
-        input.bands = {};
-        input.feature_normals = {};
+        // Nothing but the fallback below reads the input's bands and feature normals: where
+        // rounds follow, they go before the rounds allocate, and the fallback makes them anew
+        // (peak memory).
+        const bool released = moves.moved_count > 0;
+        if (released) {
+            input.bands = {};
+            input.feature_normals = {};
+        }
         const Detection& segmented = smoothed ? *smoothed : input;
         if (options_.keep_segmentation) result_.segmentation.move_planned = moves.moved;
         for (int round = 0; round < options_.max_harm_rounds && moves.moved_count > 0; ++round) {
@@ -646,8 +650,10 @@ private:
             moves = std::move(fewer);
         }
         report_.moves_undone += moves.moved_count;
-        StageClock clock(report_.stage_time, options_.stop);
-        classify_and_fit_normals(mesh, input, options_, clock);
+        if (released) {
+            StageClock clock(report_.stage_time, options_.stop);
+            classify_and_fit_normals(mesh, input, options_, clock);
+        }
         take(restore_detected(mesh, input, duplicates));
     }
 
