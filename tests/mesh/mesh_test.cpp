@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -48,6 +51,25 @@ TEST(Weld, DropsUnusedPoints) {
     const Mesh mesh = weld(soup);
     EXPECT_EQ(mesh.vertex_count(), 3u);
     EXPECT_EQ(mesh.triangles[0], (Triangle{0, 1, 2}));
+}
+
+TEST(Weld, LeavesNoSpareCapacityInThePositions) {
+    // The positions stay through a whole restoration: spare capacity is memory held for
+    // nothing. A closed box (as many vertices as reserved), a strip of open triangles (more
+    // than reserved) and a soup with unused points (fewer).
+    TriangleSoup strip;
+    for (int i = 0; i < 40; ++i) {
+        const Index p = static_cast<Index>(strip.points.size());
+        strip.points.insert(strip.points.end(), {{double(i), 0, 0}, {i + 1.0, 0, 0}, {0, 1, 0}});
+        strip.triangles.push_back({p, p + 1, p + 2});
+    }
+    TriangleSoup unused = test::box_soup();
+    unused.points.resize(unused.points.size() + 50, Vec3(9, 9, 9));
+    for (const TriangleSoup& soup : {test::box_soup(), strip, unused}) {
+        const Mesh mesh = weld(soup);
+        EXPECT_EQ(mesh.positions.capacity(), mesh.positions.size());
+    }
+    EXPECT_EQ(weld(strip).vertex_count(), 42u);
 }
 
 TEST(Weld, MapsEachSoupPointToItsVertex) {
@@ -112,6 +134,54 @@ TEST(Geometry, FaceAndVertexNormalsOfABox) {
         const Vec3 outward = (mesh.positions[v] - Vec3(1.0, 1.5, 2.0)).cwiseSign();
         EXPECT_GT(vn[v].dot(outward), 0.0);
     }
+}
+
+/// A bumpy height field over an n x n grid of vertices, two triangles a cell.
+Mesh height_field(int n) {
+    Mesh mesh;
+    for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {
+            mesh.positions.emplace_back(i, j, 0.3 * std::sin(1.3 * i) * std::cos(0.7 * j));
+        }
+    }
+    for (int j = 0; j + 1 < n; ++j) {
+        for (int i = 0; i + 1 < n; ++i) {
+            const Index a = static_cast<Index>(j * n + i), b = a + 1, c = a + n, d = c + 1;
+            mesh.triangles.push_back({a, b, d});
+            mesh.triangles.push_back({a, d, c});
+        }
+    }
+    return mesh;
+}
+
+bool same_bits(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0;
+}
+
+TEST(Geometry, NormalsAfterMovesAreThoseOfTheMovedMeshAndGoBackToTheInputs) {
+    const Mesh input = height_field(8);
+    const Connectivity c = build_connectivity(input);
+    Mesh moved = input;
+    std::vector<std::uint8_t> flags(input.vertex_count(), 0);
+    for (Index v : {Index{9}, Index{10}, Index{45}}) {
+        flags[v] = 1;
+        moved.positions[v] += Vec3(0.1, -0.2, 0.35);
+    }
+    const SurfaceNormals before = surface_normals(input, c);
+    const SurfaceNormals after = surface_normals(moved, c);
+    // A vertex no moved vertex shares a face with keeps what it was given, even a wrong value:
+    // only the moves' neighbourhoods are computed again.
+    SurfaceNormals given = before;
+    const Index far = 63;
+    given.vertex[far] = Vec3(7, 7, 7);
+    const SurfaceNormals found = surface_normals_after_moves(moved, c, given, flags);
+    EXPECT_EQ(found.vertex[far], Vec3(7, 7, 7));
+    given.vertex[far] = before.vertex[far];
+    const SurfaceNormals made = surface_normals_after_moves(moved, c, given, flags);
+    EXPECT_TRUE(same_bits(made.face, after.face));
+    EXPECT_TRUE(same_bits(made.vertex, after.vertex));
+    EXPECT_FALSE(same_bits(made.vertex, before.vertex));
+    EXPECT_TRUE(same_bits(vertex_normals_after_moves(input, c, made.vertex, flags), before.vertex));
 }
 
 TEST(Geometry, AngleIsAccurateNearZeroAndStraight) {

@@ -41,6 +41,13 @@ SurfaceNormals surface_normals_after_moves(const Mesh& mesh, const Connectivity&
                                            SurfaceNormals unmoved,
                                            std::span<const std::uint8_t> moved);
 
+/// The vertex half of surface_normals_after_moves(): the vertex normals of `mesh` from
+/// `unmoved`, those of a mesh with the same faces whose flagged vertices sat elsewhere. Either
+/// way: it gives a moved mesh's normals back to the mesh they were moved from, the same bits.
+std::vector<Vec3> vertex_normals_after_moves(const Mesh& mesh, const Connectivity& connectivity,
+                                             std::vector<Vec3> unmoved,
+                                             std::span<const std::uint8_t> moved);
+
 /// Per vertex (#V): area-weighted mean of the incident face normals, normalised; zero where
 /// every incident face is degenerate. Area weights need no trigonometry, which matters at a
 /// million corners; eq. 5.1's angle weights are kept for the feature normals that place points.

@@ -83,6 +83,10 @@ private:
 WeldedMesh weld_mapped(const TriangleSoup& soup) {
     Mesh mesh;
     mesh.triangles.reserve(soup.triangles.size());
+    // A closed genus-0 mesh has F / 2 + 2 vertices; an indexed soup lists each about once.
+    // Reserved, not grown by doubling: the spare capacity would stay through the restoration
+    // (up to half the positions, on the peak-memory budget); shrunk at the end if overrun.
+    mesh.positions.reserve(std::min(soup.points.size(), soup.triangles.size() / 2 + 2));
     std::vector<Index> new_index(soup.points.size(), kNoIndex);
     // A closed triangle mesh has about half as many vertices as faces.
     PositionTable table(std::min(soup.points.size(), soup.triangles.size() / 2 + 1));
@@ -108,6 +112,7 @@ WeldedMesh weld_mapped(const TriangleSoup& soup) {
         }
         mesh.triangles.push_back(welded);
     }
+    mesh.positions.shrink_to_fit();
     return {std::move(mesh), std::move(new_index)};
 }
 

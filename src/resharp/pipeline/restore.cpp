@@ -278,7 +278,7 @@ HarmReport held_against(const InputSurface& input, const HarmReference* referenc
 }  // namespace
 
 Detection detect_bands_after_moves(const Mesh& mesh, const Detection& before,
-                                   const InputSurface& input, std::span<const std::uint8_t> moved,
+                                   SurfaceNormals unmoved, std::span<const std::uint8_t> moved,
                                    const RestoreOptions& options) {
     Detection d;
     d.connectivity = before.connectivity;
@@ -286,7 +286,7 @@ Detection detect_bands_after_moves(const Mesh& mesh, const Detection& before,
     d.features = before.features;
     StageClock clock(d.stage_time, options.stop);
     clock.run(Stage::MeshBuilding, [&] {
-        d.normals = surface_normals_after_moves(mesh, *d.connectivity, input.normals, moved);
+        d.normals = surface_normals_after_moves(mesh, *d.connectivity, std::move(unmoved), moved);
     });
     classify_and_fit_normals(mesh, d, options, clock);
     return d;
@@ -627,23 +627,29 @@ private:
             ++report_.move_rounds;
             // The moved mesh takes the planned places for the round, which reads only the
             // flags, and gives them back after it: one copy of them alive, not two (peak memory).
+            // The input's vertex normals likewise: nothing in the round reads them (the harm
+            // check reads the input's face normals), and they come back unless the round ends
+            // the restoration.
             Mesh moved;
             moved.positions = std::move(moves.position);
             moved.triangles = mesh.triangles;
-            Detection detection =
-                detect_bands_after_moves(moved, segmented, surface, moves.moved, options_);
+            Detection detection = detect_bands_after_moves(
+                moved, segmented, {input.normals.face, std::move(input.normals.vertex)},
+                moves.moved, options_);
             add_times(detection.stage_time);
             const HarmReference reference{surface, moves.moved};
             BandRestoration restored = restore_detected(moved, detection, duplicates, &reference);
             moves.position = std::move(moved.positions);
-            if (restored.rounds_exhausted) break;  // its unchanged moved mesh was not checked
-            if (restored.unexplained_harm.empty()) {
+            if (!restored.rounds_exhausted && restored.unexplained_harm.empty()) {
                 take(std::move(restored));
                 report_.output_unchanged = false;  // the moves changed it, points or not
                 report_.moved_vertices = moves.moved_count;
                 report_.largest_move = moves.largest_move;
                 return;
             }
+            input.normals.vertex = vertex_normals_after_moves(
+                mesh, *input.connectivity, std::move(detection.normals.vertex), moves.moved);
+            if (restored.rounds_exhausted) break;  // its unchanged moved mesh was not checked
             VertexMoves fewer = without_moves_of(mesh, moves, restored.unexplained_harm);
             if (fewer.moved_count == moves.moved_count) break;  // harm no move explains
             report_.moves_undone += moves.moved_count - fewer.moved_count;

@@ -113,10 +113,11 @@ Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const Restor
 /// faces the same (near-surface restoration): the connectivity shared with `before` and the
 /// segmentations carried over from it (a patch is a set of faces; moving vertices within their
 /// cells keeps them), the normals made anew where the moves change them (the rest are the
-/// input's), classification and feature normals made anew on `mesh`.
+/// input's `unmoved` normals, which the detection takes), classification and feature normals
+/// made anew on `mesh`.
 /// \throws as detect_bands().
 Detection detect_bands_after_moves(const Mesh& mesh, const Detection& before,
-                                   const InputSurface& input, std::span<const std::uint8_t> moved,
+                                   SurfaceNormals unmoved, std::span<const std::uint8_t> moved,
                                    const RestoreOptions& options);
 
 /// The second half of restore(): points placed on the bands (eq. 5.2-5.5), then rounds of
