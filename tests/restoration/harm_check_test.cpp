@@ -125,7 +125,7 @@ TEST(HarmCheck, RestoreUndoesThePointWhosePiecesCrossAFace) {
     bands.face_role.assign(s.mesh.face_count(), BandRole::None);
     const SharpPoints wanted = test::points_on_edge_a1_b0(s);
     for (Index h = 0; h < bands.is_crossing.size(); ++h) {
-        bands.is_crossing[h] = wanted.slots.edge_point[h] != kNoIndex;
+        bands.is_crossing[h] = wanted.slots.edge_point(h) != kNoIndex;
     }
     bands.face_role[0] = bands.face_role[1] = BandRole::Edge;
     const BandRestoration r = restore_bands(s.surface(), bands, exact, options);

@@ -29,14 +29,12 @@ TwoStrips two_turned_strips() {
     // The same slots on the second strip, with a second point.
     const Vec3 turned(-2.0, 3.0, 0.75);
     points.points = {turned, turned + Vec3(0, 0, 100)};
-    PointSlots slots;
-    slots.edge_point.assign(3 * 4, kNoIndex);
-    slots.corner_point.assign(4, kNoIndex);
+    PointSlots slots(4);
     for (Index h = 0; h < 6; ++h) {
-        const Index p = points.slots.edge_point[h];
+        const Index p = points.slots.edge_point(h);
         if (p == kNoIndex) continue;
-        slots.edge_point[h] = 0;
-        slots.edge_point[h + 6] = 1;
+        slots.set_edge_point(h, 0);
+        slots.set_edge_point(h + 6, 1);
     }
     t.split = split_faces(t.strips.mesh, points.points, slots);
     return t;

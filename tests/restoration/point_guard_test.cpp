@@ -27,7 +27,7 @@ TEST(Guard, AcceptsTheIdealPoint) {
     const test::Strip s = test::make_strip();
     const SharpPoints points = test::points_on_edge_a1_b0(s);
     const GuardedPoints g = guard(s, points);
-    EXPECT_EQ(g.accepted.edge_point, points.slots.edge_point);
+    EXPECT_TRUE(g.accepted == points.slots);
     EXPECT_EQ(g.report.repairs, 0u);
 }
 
@@ -40,7 +40,7 @@ TEST(Guard, DropsAPointWhoseSplitWouldTurnAPieceOver) {
     EXPECT_FALSE(g.accepted.has_points(0));
     EXPECT_FALSE(g.accepted.has_points(1));
     // The guard changes nothing it is given.
-    EXPECT_EQ(points.slots.edge_point[1], 0u);
+    EXPECT_EQ(points.slots.edge_point(1), 0u);
 }
 
 TEST(Guard, RefusesAPieceTurnedAgainstTheFaceItReplaces) {
@@ -85,12 +85,12 @@ struct CornerWithNeighbours {
             place_sharp_points(s.mesh, s.connectivity, s.normals.face, bands, s.feature_normals);
         for (const auto& [h, x] : border_points) {
             EXPECT_TRUE(bands.is_crossing[h] && s.connectivity.twin[h] == kNoIndex);
-            points.slots.edge_point[h] = static_cast<Index>(points.points.size());
+            points.slots.set_edge_point(h, static_cast<Index>(points.points.size()));
             points.points.push_back(x);
         }
     }
-    Index corner() const { return points.slots.corner_point[0]; }
-    Index edge(Index k) const { return points.slots.edge_point[k]; }  ///< face 0's edge k
+    Index corner() const { return points.slots.corner_point(0); }
+    Index edge(Index k) const { return points.slots.edge_point(k); }  ///< face 0's edge k
     Index twin(Index k) const { return s.connectivity.twin[k]; }
 };
 
@@ -113,11 +113,11 @@ TEST(Guard, SplitsAnEdgeAtTheCornerPointRatherThanDropIt) {
     EXPECT_TRUE(c.points.points[c.corner()].isApprox(Vec3(-0.414, 0, 0.586), 1e-12));
     EXPECT_TRUE(c.points.points[c.edge(1)].isApprox(Vec3(-0.414, 0, 0.5), 1e-12));
     const GuardedPoints g = guard(c.s, c.points);
-    EXPECT_EQ(g.accepted.corner_point[0], c.corner());
-    EXPECT_EQ(g.accepted.edge_point[1], c.corner());
-    EXPECT_EQ(g.accepted.edge_point[c.twin(1)], c.corner());
-    EXPECT_EQ(g.accepted.edge_point[0], c.edge(0));
-    EXPECT_EQ(g.accepted.edge_point[2], c.edge(2));
+    EXPECT_EQ(g.accepted.corner_point(0), c.corner());
+    EXPECT_EQ(g.accepted.edge_point(1), c.corner());
+    EXPECT_EQ(g.accepted.edge_point(c.twin(1)), c.corner());
+    EXPECT_EQ(g.accepted.edge_point(0), c.edge(0));
+    EXPECT_EQ(g.accepted.edge_point(2), c.edge(2));
     EXPECT_EQ(g.report.refused_by_quality + g.report.refused_by_guard, 0u);
 }
 
@@ -136,12 +136,12 @@ TEST(Guard, SplitsTwoEdgesAtTheCornerPointWhereOneIsNotEnough) {
     ASSERT_NE(c.corner(), kNoIndex);
     EXPECT_TRUE(c.points.points[c.corner()].isApprox(Vec3(0.586, 0, -0.414), 1e-12));
     const GuardedPoints g = guard(c.s, c.points);
-    EXPECT_EQ(g.accepted.corner_point[0], c.corner());
-    EXPECT_EQ(g.accepted.edge_point[0], c.edge(0));
-    EXPECT_EQ(g.accepted.edge_point[1], c.corner());
-    EXPECT_EQ(g.accepted.edge_point[c.twin(1)], c.corner());
-    EXPECT_EQ(g.accepted.edge_point[2], c.corner());
-    EXPECT_EQ(g.accepted.edge_point[c.twin(2)], c.corner());
+    EXPECT_EQ(g.accepted.corner_point(0), c.corner());
+    EXPECT_EQ(g.accepted.edge_point(0), c.edge(0));
+    EXPECT_EQ(g.accepted.edge_point(1), c.corner());
+    EXPECT_EQ(g.accepted.edge_point(c.twin(1)), c.corner());
+    EXPECT_EQ(g.accepted.edge_point(2), c.corner());
+    EXPECT_EQ(g.accepted.edge_point(c.twin(2)), c.corner());
     EXPECT_EQ(g.report.refused_by_quality + g.report.refused_by_guard, 0u);
     const SplitMesh split = split_faces(c.s.mesh, c.points.points, g.accepted);
     const MeshDiagnostics d = diagnose(split.mesh, build_connectivity(split.mesh));
@@ -191,9 +191,9 @@ TEST(Guard, RepairsStayWithinTheirBoundWhenEveryPointIsWrong) {
     const GuardedPoints g = guard_points(plate.surface(), plate.d.feature_normals, points, {});
     EXPECT_GT(g.report.repairs, 20u);
     EXPECT_LE(g.report.repairs, 3 * slots);
-    for (Index h = 0; h < g.accepted.edge_point.size(); ++h) {
-        const Index p = g.accepted.edge_point[h];
-        const bool kept_or_snapped = p == kNoIndex || p == points.slots.edge_point[h] ||
+    for (Index h = 0; h < 3 * g.accepted.face_count(); ++h) {
+        const Index p = g.accepted.edge_point(h);
+        const bool kept_or_snapped = p == kNoIndex || p == points.slots.edge_point(h) ||
                                      p >= points.edge_points;  // snapped onto a corner point
         EXPECT_TRUE(kept_or_snapped) << "half-edge " << h;
     }
@@ -223,8 +223,7 @@ void expect_guard_again_equals_full_guard(unsigned seed, double spread, double w
         const GuardedPoints full = guard_points(surface, d.feature_normals, points, now);
         const GuardedPoints again =
             guard_points_again(surface, d.feature_normals, points, last, before, now, every_face);
-        EXPECT_EQ(again.accepted.edge_point, full.accepted.edge_point) << "round " << round;
-        EXPECT_EQ(again.accepted.corner_point, full.accepted.corner_point) << "round " << round;
+        EXPECT_TRUE(again.accepted == full.accepted) << "round " << round;
         EXPECT_EQ(again.report.refused_by_quality, full.report.refused_by_quality);
         EXPECT_EQ(again.report.refused_by_guard, full.report.refused_by_guard);
         EXPECT_EQ(again.report.repairs, full.report.repairs);
@@ -233,8 +232,7 @@ void expect_guard_again_equals_full_guard(unsigned seed, double spread, double w
         last = again;
     }
     // A withdrawal changes something, or the test would prove nothing.
-    EXPECT_NE(last.accepted.edge_point,
-              guard_points(surface, d.feature_normals, points, {}).accepted.edge_point);
+    EXPECT_FALSE(last.accepted == guard_points(surface, d.feature_normals, points, {}).accepted);
 }
 
 TEST(Guard, AGuardAgainEqualsAFullGuard) {

@@ -14,6 +14,37 @@ namespace {
 const Vec3 kTop(0, 1, 0);
 const Vec3 kSide(1, 0, 0);
 
+TEST(PointSlots, KeepSlotsOnlyForFacesGivenAPointAndCompareByFace) {
+    PointSlots a(1000);
+    a.set_corner_point(999, kNoIndex);  // emptying a face without slots makes none
+    EXPECT_EQ(a.faces_with_slots(), 0u);
+    a.set_edge_point(3 * 7 + 2, 4);
+    a.set_edge_point(3 * 8, 4);
+    a.set_corner_point(500, 9);
+    EXPECT_EQ(a.faces_with_slots(), 3u);
+    EXPECT_EQ(a.edge_point(23), 4u);
+    EXPECT_EQ(a.edge_point(22), kNoIndex);
+    EXPECT_EQ(a.slot(500, 3), 9u);
+    EXPECT_TRUE(a.has_points(7) && a.has_points(8) && a.has_points(500));
+    EXPECT_FALSE(a.has_points(9));
+    std::vector<Index> seen;
+    a.for_each_point(7, [&](Index p) { seen.push_back(p); });
+    EXPECT_EQ(seen, (std::vector<Index>{4}));
+    // The same points given in another order: equal, though their rows lie elsewhere.
+    PointSlots b(1000);
+    b.set_corner_point(500, 9);
+    b.set_edge_point(3 * 8, 4);
+    b.set_edge_point(3 * 7 + 2, 4);
+    EXPECT_TRUE(a == b);
+    EXPECT_TRUE(a.same_at(500, b, 500));
+    b.set_corner_point(500, kNoIndex);  // emptied, not gone: still unequal to a
+    EXPECT_FALSE(a == b);
+    EXPECT_FALSE(a.has_points(500) == b.has_points(500));
+    a.empty_slots_of([](Index p) { return p == 9; });
+    EXPECT_TRUE(a == b);
+    EXPECT_FALSE(a == PointSlots(999));
+}
+
 TEST(EdgePoint, LandsOnTheIdealEdgeOfAConvexRightAngle) {
     const Vec3 a(-0.3, 0.0, 0.7);
     const Vec3 b(0.0, -0.2, 0.9);
@@ -97,8 +128,9 @@ TEST(SharpPoints, APointBeyondTheChordGoesInsideTheFaceThatHoldsIt) {
     EXPECT_EQ(ours.face_points, 1u);
     EXPECT_EQ(ours.refused_by_flip_test, 0u);
     EXPECT_TRUE(ours.points[0].isApprox(Vec3(0, 0, 0.75), 1e-15));
-    EXPECT_EQ(ours.slots.corner_point, (std::vector<Index>{0, kNoIndex}));
-    for (Index id : ours.slots.edge_point) EXPECT_EQ(id, kNoIndex);
+    PointSlots expected(2);
+    expected.set_corner_point(0, 0);
+    EXPECT_TRUE(ours.slots == expected);
 }
 
 /// The strip past the edge with a0 moved so that neither face of a1-b0 holds its point.
@@ -126,7 +158,9 @@ TEST(SharpPoints, APointOverAFaceAroundAnEndGoesInsideIt) {
     s.rebuild();
     const SharpPoints points = test::points_on_edge_a1_b0(s);
     ASSERT_EQ(points.face_points, 1u);
-    EXPECT_EQ(points.slots.corner_point, (std::vector<Index>{kNoIndex, kNoIndex, 0}));
+    PointSlots expected(3);
+    expected.set_corner_point(2, 0);
+    EXPECT_TRUE(points.slots == expected);
     EXPECT_TRUE(points.points[0].isApprox(Vec3(0, 0, 0.75), 1e-15));
 }
 
@@ -168,7 +202,7 @@ TEST(SharpPoints, SecondOrderPointMovesWithThePart) {
         SCOPED_TRACE(shift.x());
         const SharpPoints moved = test::points_on_edge_a1_b0(boss_strip(shift));
         ASSERT_EQ(moved.edge_points, 1u);
-        EXPECT_EQ(moved.slots.edge_point, base.slots.edge_point);
+        EXPECT_TRUE(moved.slots == base.slots);
         EXPECT_LT((moved.points[0] - shift - base.points[0]).norm(), 2e-11);
     }
 }

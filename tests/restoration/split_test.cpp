@@ -30,7 +30,7 @@ TEST(Split, OneCrossingEdgeSplitsBothFacesAtTheIdealPoint) {
 TEST(Split, NoSlotLeftMeansTheInputComesBack) {
     const test::Strip s = test::make_strip();
     SharpPoints points = test::points_on_edge_a1_b0(s);
-    points.slots.edge_point.assign(points.slots.edge_point.size(), kNoIndex);
+    points.slots = PointSlots(points.slots.face_count());
     const SplitMesh out = split_faces(s.mesh, points.points, points.slots);
     EXPECT_EQ(out.mesh.positions, s.mesh.positions);  // the unused point is not added
     EXPECT_EQ(out.mesh.triangles, s.mesh.triangles);
@@ -41,7 +41,7 @@ TEST(Split, ACornerPointFansItsFace) {
     const test::Strip s = test::make_strip();
     SharpPoints points = test::points_on_edge_a1_b0(s);
     points.points.push_back(Vec3(-0.1, -0.05, 0.6));  // inside face 0, slightly off it
-    points.slots.corner_point[0] = 1;
+    points.slots.set_corner_point(0, 1);
     const SplitMesh out = split_faces(s.mesh, points.points, points.slots);
     // Face 0 has four boundary vertices (three corners and the edge point): a fan of four.
     EXPECT_EQ(std::count(out.source_face.begin(), out.source_face.end(), 0u), 4);
@@ -54,7 +54,7 @@ TEST(Split, APointBeyondTheChordFansTheFaceThatHoldsIt) {
     const test::Strip s = test::make_strip_past_the_edge();
     const SharpPoints points = test::points_on_edge_a1_b0(s);
     ASSERT_EQ(points.face_points, 1u);
-    ASSERT_EQ(points.slots.corner_point[0], 0u);
+    ASSERT_EQ(points.slots.corner_point(0), 0u);
     const SplitMesh out = split_faces(s.mesh, points.points, points.slots);
     EXPECT_EQ(out.source_face, (std::vector<Index>{0, 0, 0, 1}));
     EXPECT_EQ(out.mesh.triangles[3], s.mesh.triangles[1]);

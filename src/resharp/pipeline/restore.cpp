@@ -118,20 +118,16 @@ void withdraw_points_of(const std::vector<Index>& faces, const PointSlots& slots
 
 /// Per face (#F): 1 where the slots of `after` differ from those of `before` (so its pieces do).
 std::vector<std::uint8_t> changed_faces(const PointSlots& before, const PointSlots& after) {
-    std::vector<std::uint8_t> changed(after.corner_point.size(), 0);
+    std::vector<std::uint8_t> changed(after.face_count(), 0);
     for_each_index(changed.size(), 8192, [&](std::size_t f) {
-        changed[f] = before.corner_point[f] != after.corner_point[f] ||
-                     before.edge_point[3 * f] != after.edge_point[3 * f] ||
-                     before.edge_point[3 * f + 1] != after.edge_point[3 * f + 1] ||
-                     before.edge_point[3 * f + 2] != after.edge_point[3 * f + 2];
+        changed[f] = !before.same_at(static_cast<Index>(f), after, static_cast<Index>(f));
     });
     return changed;
 }
 
 /// Whether two guard results accept the same slots with the same counts.
 [[maybe_unused]] bool same_guard(const GuardedPoints& a, const GuardedPoints& b) {
-    return a.accepted.edge_point == b.accepted.edge_point &&
-           a.accepted.corner_point == b.accepted.corner_point &&
+    return a.accepted == b.accepted &&
            a.report.refused_by_quality == b.report.refused_by_quality &&
            a.report.refused_by_guard == b.report.refused_by_guard &&
            a.report.repairs == b.report.repairs;
@@ -382,7 +378,7 @@ std::vector<PointFate> point_fates(const BandClassification& bands, const BandRe
             candidate = true;
             withdrawn = withdrawn || (p < r.withdrawn.size() && r.withdrawn[p]);
         });
-        const bool accepted = !r.accepted.corner_point.empty() && r.accepted.has_points(f);
+        const bool accepted = r.accepted.face_count() > 0 && r.accepted.has_points(f);
         fate[f] = accepted && kept        ? PointFate::Inserted
                   : accepted || withdrawn ? PointFate::UndoneByHarm
                   : candidate             ? PointFate::RefusedByGuard
@@ -396,7 +392,8 @@ std::vector<PointFate> point_fates(const BandClassification& bands, const BandRe
 std::size_t face_points_inserted(const BandRestoration& r) {
     if (r.points.face_points == 0) return 0;
     std::vector<std::uint8_t> in_face(r.points.points.size(), 0);
-    for (Index p : r.points.slots.corner_point) {
+    for (Index f = 0; f < r.points.slots.face_count(); ++f) {
+        const Index p = r.points.slots.corner_point(f);
         if (p != kNoIndex && p < r.points.edge_points) in_face[p] = 1;
     }
     return static_cast<std::size_t>(std::count_if(r.output.point_of_new_vertex.begin(),
@@ -587,6 +584,9 @@ private:
         rule.scope = FitScope::Patches;
         for (int round = 0; round < kMidpointPatchRounds; ++round) {
             const Mesh current = moved_mesh(surface.mesh, moves);
+            // The last round's detection goes before this one's allocates: the moves planned
+            // from it are all that is read of it (peak memory: a third detection alive).
+            smoothed.reset();
             smoothed = detect_bands(current, input.connectivity, options_);
             add_times(smoothed->stage_time);
             clock.run(Stage::VertexMoves, [&] {

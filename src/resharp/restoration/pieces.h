@@ -88,13 +88,13 @@ void for_each_piece(const Mesh& mesh, const PointSlots& slots, const PieceVertic
     detail::FacePolygon polygon;
     for (Index k = 0; k < 3; ++k) {
         polygon.push(mesh.triangles[f][k]);
-        if (slots.edge_point[3 * f + k] != kNoIndex) {
-            polygon.push(ids.of_point(slots.edge_point[3 * f + k]));
+        if (slots.edge_point(3 * f + k) != kNoIndex) {
+            polygon.push(ids.of_point(slots.edge_point(3 * f + k)));
         }
     }
-    if (slots.corner_point[f] != kNoIndex) {
+    if (slots.corner_point(f) != kNoIndex) {
         // An edge snapped onto the corner point (the guard's repair) leaves its two pieces empty.
-        const Index centre = ids.of_point(slots.corner_point[f]);
+        const Index centre = ids.of_point(slots.corner_point(f));
         for (int i = 0; i < polygon.size; ++i) {
             if (polygon.at(i) != centre && polygon.at(i + 1) != centre) {
                 emit(polygon.at(i), polygon.at(i + 1), centre);

@@ -222,14 +222,14 @@ public:
     /// Returns the number of points dropped.
     std::size_t repair(Index f) {
         for (int i = 0; i < 3; ++i) {
-            if (*slot(f, i) != kNoIndex && replace_if_sound(f, 1u << i, kNoIndex)) return 1;
+            if (slot(f, i) != kNoIndex && replace_if_sound(f, 1u << i, kNoIndex)) return 1;
         }
         if (try_snapping(f, true)) return 0;
-        if (*slot(f, 3) != kNoIndex && replace_if_sound(f, 1u << 3, kNoIndex)) return 1;
+        if (slot(f, 3) != kNoIndex && replace_if_sound(f, 1u << 3, kNoIndex)) return 1;
         if (try_snapping(f, false)) return 0;
         std::size_t dropped = 0;
         for (int i = 0; i < 4; ++i) {
-            if (*slot(f, i) == kNoIndex) continue;
+            if (slot(f, i) == kNoIndex) continue;
             set(f, i, kNoIndex);
             ++dropped;
         }
@@ -238,17 +238,15 @@ public:
 
 private:
     /// Slot i of face f: its half-edges 0..2, then its corner (3).
-    Index* slot(Index f, int i) {
-        return i < 3 ? &slots_.edge_point[3 * f + static_cast<Index>(i)] : &slots_.corner_point[f];
-    }
+    Index slot(Index f, int i) const { return slots_.slot(f, i); }
     /// Sets slot i of face f, and for an edge the same slot seen from the face across it.
     void set(Index f, int i, Index value) {
-        *slot(f, i) = value;
+        slots_.set_slot(f, i, value);
         touch(f);
         if (i == 3) return;
         const Index twin = c_.twin[3 * f + static_cast<Index>(i)];
         if (twin == kNoIndex) return;
-        slots_.edge_point[twin] = value;
+        slots_.set_edge_point(twin, value);
         touch(face_of(twin));
     }
     void touch(Index f) {
@@ -266,11 +264,11 @@ private:
     bool replace_if_sound(Index f, unsigned slots, Index replacement) {
         std::array<Index, 4> kept{};
         for (int i = 0; i < 4; ++i) {
-            kept[static_cast<std::size_t>(i)] = *slot(f, i);
-            if (slots & (1u << i)) *slot(f, i) = replacement;
+            kept[static_cast<std::size_t>(i)] = slot(f, i);
+            if (slots & (1u << i)) slots_.set_slot(f, i, replacement);
         }
         const bool sound = fault_of(f) == Fault::None;
-        for (int i = 0; i < 4; ++i) *slot(f, i) = kept[static_cast<std::size_t>(i)];
+        for (int i = 0; i < 4; ++i) slots_.set_slot(f, i, kept[static_cast<std::size_t>(i)]);
         if (!sound) return false;
         for (int i = 0; i < 4; ++i) {
             if (slots & (1u << i)) set(f, i, replacement);
@@ -282,7 +280,7 @@ private:
     /// their own points if the face then splits without fault. Two snapped edges leave the
     /// corner between them joined to the corner point by the faces across them alone.
     bool snap_if_sound(Index f, unsigned edges) {
-        if (!replace_if_sound(f, edges, slots_.corner_point[f])) return false;
+        if (!replace_if_sound(f, edges, slots_.corner_point(f))) return false;
         for (int i = 0; i < 3; ++i) {
             if (edges & (1u << i)) mark_snapped(f, i);
         }
@@ -294,17 +292,17 @@ private:
     /// across.
     bool beyond_corner(Index f, int i) const {
         const Index h = 3 * f + static_cast<Index>(i);
-        const Index point = slots_.edge_point[h], twin = c_.twin[h];
+        const Index point = slots_.edge_point(h), twin = c_.twin[h];
         if (twin == kNoIndex) return false;
         Index next = kNoIndex;
         for (Index k = 3 * face_of(twin); k < 3 * face_of(twin) + 3; ++k) {
-            const Index p = slots_.edge_point[k];
+            const Index p = slots_.edge_point(k);
             if (k == twin || p == kNoIndex) continue;
             if (next != kNoIndex) return false;
             next = p;
         }
         if (next == kNoIndex) return false;
-        const Vec3& corner = ids_.position(ids_.of_point(slots_.corner_point[f]));
+        const Vec3& corner = ids_.position(ids_.of_point(slots_.corner_point(f)));
         return (ids_.position(ids_.of_point(point)) - corner)
                    .dot(ids_.position(ids_.of_point(next)) - corner) < 0.0;
     }
@@ -313,11 +311,11 @@ private:
     /// a point (beyond the corner if `beyond_only`) and were never snapped, the first set that is
     /// enough in slot order; none if f has no corner point or an edge of f is on it already.
     bool try_snapping(Index f, bool beyond_only) {
-        if (slots_.corner_point[f] == kNoIndex) return false;
+        if (slots_.corner_point(f) == kNoIndex) return false;
         unsigned may_snap = 0;
         for (int i = 0; i < 3; ++i) {
-            if (*slot(f, i) == slots_.corner_point[f]) return false;
-            if (*slot(f, i) == kNoIndex || flags_.snapped[3 * f + static_cast<Index>(i)]) continue;
+            if (slot(f, i) == slots_.corner_point(f)) return false;
+            if (slot(f, i) == kNoIndex || flags_.snapped[3 * f + static_cast<Index>(i)]) continue;
             if (!beyond_only || beyond_corner(f, i)) may_snap |= 1u << i;
         }
         for (unsigned edges : {1u, 2u, 4u, 3u, 5u, 6u}) {
@@ -337,18 +335,18 @@ private:
 /// point (a snapped edge), or none: the guard only takes away.
 [[maybe_unused]] bool only_takes_away(const PointSlots& accepted, const SharpPoints& candidates,
                                       const Connectivity& c) {
-    for (Index h = 0; h < accepted.edge_point.size(); ++h) {
-        const Index id = accepted.edge_point[h];
-        if (id == kNoIndex || id == candidates.slots.edge_point[h]) continue;
+    for (Index h = 0; h < 3 * accepted.face_count(); ++h) {
+        const Index id = accepted.edge_point(h);
+        if (id == kNoIndex || id == candidates.slots.edge_point(h)) continue;
         const Index twin = c.twin[h];
         const bool is_corner_of_a_face =
-            id == candidates.slots.corner_point[face_of(h)] ||
-            (twin != kNoIndex && id == candidates.slots.corner_point[face_of(twin)]);
+            id == candidates.slots.corner_point(face_of(h)) ||
+            (twin != kNoIndex && id == candidates.slots.corner_point(face_of(twin)));
         if (!is_corner_of_a_face) return false;
     }
-    for (Index f = 0; f < accepted.corner_point.size(); ++f) {
-        const Index id = accepted.corner_point[f];
-        if (id != kNoIndex && id != candidates.slots.corner_point[f]) return false;
+    for (Index f = 0; f < accepted.face_count(); ++f) {
+        const Index id = accepted.corner_point(f);
+        if (id != kNoIndex && id != candidates.slots.corner_point(f)) return false;
     }
     return true;
 }
@@ -363,38 +361,22 @@ bool is_withdrawn(std::span<const std::uint8_t> withdrawn, Index p) {
 void start_face(const SharpPoints& candidates, std::span<const std::uint8_t> withdrawn, Index f,
                 PointSlots& slots, Index into) {
     auto kept = [&](Index p) { return p == kNoIndex || is_withdrawn(withdrawn, p) ? kNoIndex : p; };
-    for (Index k = 0; k < 3; ++k) {
-        slots.edge_point[3 * into + k] = kept(candidates.slots.edge_point[3 * f + k]);
-    }
-    slots.corner_point[into] = kept(candidates.slots.corner_point[f]);
+    for (int k = 0; k < 4; ++k) slots.set_slot(into, k, kept(candidates.slots.slot(f, k)));
 }
 
 /// The candidates' slots less the withdrawn points.
 PointSlots starting_slots(const SharpPoints& candidates, std::span<const std::uint8_t> withdrawn) {
     PointSlots slots = candidates.slots;
-    if (withdrawn.empty()) return slots;
-    for (Index& id : slots.edge_point) {
-        if (id != kNoIndex && withdrawn[id]) id = kNoIndex;
-    }
-    for (Index& id : slots.corner_point) {
-        if (id != kNoIndex && withdrawn[id]) id = kNoIndex;
-    }
+    if (!withdrawn.empty()) slots.empty_slots_of([&](Index p) { return withdrawn[p] != 0; });
     return slots;
 }
 
 std::vector<Index> faces_with_points(const PointSlots& slots) {
     std::vector<Index> faces;
-    for (Index f = 0; f < slots.corner_point.size(); ++f) {
+    for (Index f = 0; f < slots.face_count(); ++f) {
         if (slots.has_points(f)) faces.push_back(f);
     }
     return faces;
-}
-
-/// Whether the slots of face fa in `a` are those of face fb in `b`.
-bool same_slots(const PointSlots& a, Index fa, const PointSlots& b, Index fb) {
-    return a.corner_point[fa] == b.corner_point[fb] &&
-           std::equal(a.edge_point.begin() + 3 * fa, a.edge_point.begin() + 3 * fa + 3,
-                      b.edge_point.begin() + 3 * fb);
 }
 
 /// Whether face f had a point at the start of the run that `before` withdrew points for.
@@ -448,11 +430,11 @@ std::vector<Index> faces_to_guard_again(const Connectivity& c, const SharpPoints
             f, [&](Index p) { lost = lost || (now[p] != 0 && !is_withdrawn(before, p)); });
         return lost;
     };
-    PointSlots started{std::vector<Index>(3), std::vector<Index>(1)};  // one face's start
+    PointSlots started(1);  // one face's start
     auto left_alone = [&](Index f) {
         if (flags.repaired[f] || flags.expand_anyway[f]) return false;
         start_face(candidates, before, f, started, 0);
-        return same_slots(started, 0, previous.accepted, f);
+        return started.same_at(0, previous.accepted, f);
     };
     std::vector<Index> expand;  // the faces whose neighbours join
     auto seed = [&](Index f) {
@@ -608,9 +590,7 @@ GuardedPoints guard_points_again(const InputSurface& input, const FeatureNormals
     PointSlots slots = previous.accepted;
     auto set_back = [&](const std::vector<Index>& faces) {
         for (Index f : faces) {
-            slots.corner_point[f] = previous.accepted.corner_point[f];
-            std::copy_n(previous.accepted.edge_point.begin() + 3 * f, 3,
-                        slots.edge_point.begin() + 3 * f);
+            for (int k = 0; k < 4; ++k) slots.set_slot(f, k, previous.accepted.slot(f, k));
         }
     };
     auto guard_region = [&](const std::vector<Index>& region) {
@@ -648,7 +628,7 @@ GuardedPoints guard_points_again(const InputSurface& input, const FeatureNormals
             if (region_flags.is_border[r.face]) disturbed.push_back(r.face);
         }
         for (Index f : region) {
-            if (region_flags.is_border[f] && !same_slots(out.accepted, f, previous.accepted, f)) {
+            if (region_flags.is_border[f] && !out.accepted.same_at(f, previous.accepted, f)) {
                 disturbed.push_back(f);
             }
         }

@@ -180,7 +180,7 @@ bool face_holds(const Mesh& mesh, Index f, const Vec3& p) {
 /// Whether face f may take a point inside it: not a corner triangle (whose slot its corner
 /// point takes) and no other edge's point inside it already.
 bool may_take_point(const BandClassification& bands, const SharpPoints& out, Index f) {
-    return bands.face_role[f] != BandRole::Corner && out.slots.corner_point[f] == kNoIndex;
+    return bands.face_role[f] != BandRole::Corner && out.slots.corner_point(f) == kNoIndex;
 }
 
 /// The face that holds the point x of crossing edge h, beyond the edge's chord, and may take it:
@@ -273,8 +273,8 @@ void take_edge_placement(const Connectivity& c, Index h, const EdgePlacement& pl
             beyond.push_back({h, placed.x});
             return;
         case EdgeFate::OnEdge:
-            out.slots.edge_point[h] = out.slots.edge_point[c.twin[h]] =
-                static_cast<Index>(out.points.size());
+            out.slots.set_edge_point(h, static_cast<Index>(out.points.size()));
+            out.slots.set_edge_point(c.twin[h], static_cast<Index>(out.points.size()));
             out.points.push_back(placed.x);
             ++out.edge_points;
             return;
@@ -300,7 +300,7 @@ void place_points_beyond_chords(const Mesh& mesh, const Connectivity& c,
             ++out.refused_by_flip_test;
             continue;
         }
-        out.slots.corner_point[f] = static_cast<Index>(out.points.size());
+        out.slots.set_corner_point(f, static_cast<Index>(out.points.size()));
         out.points.push_back(p.x);
         ++out.face_points;
         ++out.edge_points;
@@ -365,7 +365,7 @@ void place_corner_points(const Mesh& mesh, const Connectivity& c,
             ++out.refused_by_spike_test;
             continue;
         }
-        out.slots.corner_point[f] = static_cast<Index>(out.points.size());
+        out.slots.set_corner_point(f, static_cast<Index>(out.points.size()));
         out.points.push_back(sides.corner_point(t, *m, out.first_order_fallbacks));
         ++out.corner_points;
     }
@@ -379,16 +379,16 @@ namespace {
 /// half-edges; every slot names an existing point.
 [[maybe_unused]] bool slots_follow_bands(const Connectivity& c, const BandClassification& bands,
                                          const SharpPoints& p) {
-    for (Index h = 0; h < p.slots.edge_point.size(); ++h) {
-        const Index id = p.slots.edge_point[h];
+    for (Index h = 0; h < 3 * p.slots.face_count(); ++h) {
+        const Index id = p.slots.edge_point(h);
         if (id == kNoIndex) continue;
-        if (!bands.is_crossing[h] || c.twin[h] == kNoIndex || p.slots.edge_point[c.twin[h]] != id ||
+        if (!bands.is_crossing[h] || c.twin[h] == kNoIndex || p.slots.edge_point(c.twin[h]) != id ||
             id >= p.points.size()) {
             return false;
         }
     }
-    for (Index f = 0; f < p.slots.corner_point.size(); ++f) {
-        const Index id = p.slots.corner_point[f];
+    for (Index f = 0; f < p.slots.face_count(); ++f) {
+        const Index id = p.slots.corner_point(f);
         if (id != kNoIndex && id >= p.points.size()) return false;
     }
     return true;
@@ -405,8 +405,7 @@ SharpPoints place_sharp_points(const Mesh& mesh, const Connectivity& connectivit
         throw InvalidInput("spike angle must lie in (0, 180] degrees");
     }
     SharpPoints out;
-    out.slots.edge_point.assign(connectivity.twin.size(), kNoIndex);
-    out.slots.corner_point.assign(mesh.face_count(), kNoIndex);
+    out.slots = PointSlots(mesh.face_count());
     const SideSurfaces sides(mesh, feature_normals, options.placement);
     place_edge_points(mesh, connectivity, bands, feature_normals.normal, sides, out);
     place_corner_points(mesh, connectivity, face_normals, bands, feature_normals.normal, sides,

@@ -5,6 +5,7 @@
 /// planes (eq. 5.2, 5.3) or their second-order fits (surfaces/local_quadric.h), which meet on a
 /// curved edge where the planes meet off it.
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -37,28 +38,87 @@ struct SharpPointOptions {
 
 /// Which point, if any, each place of the mesh that can hold one holds: the crossing edges
 /// and the corner triangles. Point numbers index a point list kept beside it (SharpPoints).
-struct PointSlots {
-    /// Per half-edge (#3F): the edge's point, on both half-edges of a crossing edge that has
-    /// one; kNoIndex elsewhere.
-    std::vector<Index> edge_point;
-    /// Per face (#F): the point inside the face, or kNoIndex: a corner triangle's corner point,
-    /// or the point of a crossing edge of the face that lies beyond the edge's chord over it.
-    std::vector<Index> corner_point;
+/// Only faces that were ever given a point keep slots (the bands, a few percent of the faces):
+/// four slots for every face cost 16 bytes per input triangle for each set of slots alive, and
+/// the placement and the guard keep one each (the peak-memory budget).
+class PointSlots {
+public:
+    PointSlots() = default;
+    /// Empty slots for `face_count` faces.
+    explicit PointSlots(std::size_t face_count) : row_of_face_(face_count, kNoIndex) {}
+
+    std::size_t face_count() const { return row_of_face_.size(); }
+    /// How many faces keep slots: those ever given a point (the memory it holds).
+    std::size_t faces_with_slots() const { return rows_.size(); }
+    /// Slot k of face f: the point on its half-edge 3f + k (k < 3), then the point inside it
+    /// (k = 3); kNoIndex where there is none.
+    Index slot(Index f, int k) const {
+        const Index row = row_of_face_[f];
+        return row == kNoIndex ? kNoIndex : rows_[row][static_cast<std::size_t>(k)];
+    }
+    /// Sets slot k of face f alone (not the twin half-edge's).
+    void set_slot(Index f, int k, Index point) {
+        Index& row = row_of_face_[f];
+        if (row == kNoIndex) {
+            if (point == kNoIndex) return;
+            row = static_cast<Index>(rows_.size());
+            rows_.push_back({kNoIndex, kNoIndex, kNoIndex, kNoIndex});
+        }
+        rows_[row][static_cast<std::size_t>(k)] = point;
+    }
+    /// The point of half-edge h: on both half-edges of a crossing edge that has one.
+    Index edge_point(Index h) const { return slot(h / 3, static_cast<int>(h % 3)); }
+    void set_edge_point(Index h, Index point) { set_slot(h / 3, static_cast<int>(h % 3), point); }
+    /// The point inside face f: a corner triangle's corner point, or the point of a crossing
+    /// edge of the face that lies beyond the edge's chord over it.
+    Index corner_point(Index f) const { return slot(f, 3); }
+    void set_corner_point(Index f, Index point) { set_slot(f, 3, point); }
 
     /// True when face f has a point on one of its edges or inside it.
     bool has_points(Index f) const {
-        return corner_point[f] != kNoIndex || edge_point[3 * f] != kNoIndex ||
-               edge_point[3 * f + 1] != kNoIndex || edge_point[3 * f + 2] != kNoIndex;
+        const Index row = row_of_face_[f];
+        if (row == kNoIndex) return false;
+        const std::array<Index, 4>& r = rows_[row];
+        return r[0] != kNoIndex || r[1] != kNoIndex || r[2] != kNoIndex || r[3] != kNoIndex;
     }
     /// Calls visit(point) for each slot of face f that holds one: its three edges, then its
     /// corner (an edge snapped onto the corner point is visited twice).
     template <class Visit>
     void for_each_point(Index f, Visit&& visit) const {
-        for (Index k = 0; k < 3; ++k) {
-            if (edge_point[3 * f + k] != kNoIndex) visit(edge_point[3 * f + k]);
+        const Index row = row_of_face_[f];
+        if (row == kNoIndex) return;
+        for (Index p : rows_[row]) {
+            if (p != kNoIndex) visit(p);
         }
-        if (corner_point[f] != kNoIndex) visit(corner_point[f]);
     }
+    /// Empties every slot whose point `drop` takes.
+    template <class Drop>
+    void empty_slots_of(Drop&& drop) {
+        for (std::array<Index, 4>& row : rows_) {
+            for (Index& p : row) {
+                if (p != kNoIndex && drop(p)) p = kNoIndex;
+            }
+        }
+    }
+    /// Whether face f holds here what face g holds in `other`.
+    bool same_at(Index f, const PointSlots& other, Index g) const {
+        for (int k = 0; k < 4; ++k) {
+            if (slot(f, k) != other.slot(g, k)) return false;
+        }
+        return true;
+    }
+    /// The same points in the same slots of the same number of faces.
+    friend bool operator==(const PointSlots& a, const PointSlots& b) {
+        if (a.face_count() != b.face_count()) return false;
+        for (Index f = 0; f < a.face_count(); ++f) {
+            if (!a.same_at(f, b, f)) return false;
+        }
+        return true;
+    }
+
+private:
+    std::vector<Index> row_of_face_;  ///< per face (#F): its row of slots, or kNoIndex: none
+    std::vector<std::array<Index, 4>> rows_;  ///< slots 0..3 of the faces that have a row
 };
 
 struct SharpPoints {
