@@ -55,16 +55,20 @@ TEST(HarmCheck, AFaceTurnedByAMovedVertexIsJudgedWhereTheMoveIsGiven) {
     moved.mesh = s.mesh;
     moved.mesh.positions[2] = Vec3(-2.0, 3.0, 0.5);
     moved.source_face = {0, 1};
+    const std::vector<Vec3> normals = face_normals(moved.mesh);
     const std::vector<std::uint8_t> b0_moved{0, 0, 1, 0};
-    const HarmReport r = check_harm(s.surface(), moved, {}, {}, b0_moved);
+    const HarmReport r = check_harm(s.surface(), moved, {}, {}, {b0_moved, normals});
     EXPECT_GE(r.turned, 1u);
     EXPECT_EQ(r.harmful_faces, (std::vector<Index>{0, 1}));
     EXPECT_TRUE(check_harm(s.surface(), moved).is_harmless());  // no face altered, none judged
     const std::vector<std::uint8_t> a0_moved{1, 0, 0, 0};       // a0's faces: face 0 alone
-    EXPECT_EQ(check_harm(s.surface(), moved, {}, {}, a0_moved).harmful_faces,
+    EXPECT_EQ(check_harm(s.surface(), moved, {}, {}, {a0_moved, normals}).harmful_faces,
               (std::vector<Index>{0}));
-    EXPECT_THROW(check_harm(s.surface(), moved, {}, {}, std::vector<std::uint8_t>{1}),
-                 InvalidInput);
+    // The whole faces are judged by the normals given: the input's own say nothing turned.
+    EXPECT_TRUE(check_harm(s.surface(), moved, {}, {}, {b0_moved, s.normals.face}).is_harmless());
+    const std::vector<std::uint8_t> one_flag{1};
+    EXPECT_THROW(check_harm(s.surface(), moved, {}, {}, {one_flag, normals}), InvalidInput);
+    EXPECT_THROW(check_harm(s.surface(), moved, {}, {}, {b0_moved, {}}), InvalidInput);
 }
 
 /// The strip with a triangle hanging from b0 into the space between face 0 and the sharp edge,

@@ -127,8 +127,7 @@ std::vector<std::uint8_t> changed_faces(const PointSlots& before, const PointSlo
 
 /// Whether two guard results accept the same slots with the same counts.
 [[maybe_unused]] bool same_guard(const GuardedPoints& a, const GuardedPoints& b) {
-    return a.accepted == b.accepted &&
-           a.report.refused_by_quality == b.report.refused_by_quality &&
+    return a.accepted == b.accepted && a.report.refused_by_quality == b.report.refused_by_quality &&
            a.report.refused_by_guard == b.report.refused_by_guard &&
            a.report.repairs == b.report.repairs;
 }
@@ -268,7 +267,8 @@ HarmReport held_against(const InputSurface& input, const HarmReference* referenc
                                      check_harm(input, split, options.harm).harmful_faces);
         return harm;
     }
-    return check_harm(reference->input, split, options.harm, changed, reference->moved);
+    return check_harm(reference->input, split, options.harm, changed,
+                      {reference->moved, input.normals.face});
 }
 
 }  // namespace

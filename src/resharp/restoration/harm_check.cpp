@@ -125,13 +125,14 @@ bool has_moved_corner(const Triangle& t, std::span<const std::uint8_t> moved) {
 }
 
 /// The split faces of an output mesh, numbered in input order, and their pieces, numbered
-/// from 0 in output order.
+/// from 0 in output order: all of them, or with `whole_apart` those of the faces with points
+/// alone, the faces left whole with moved corners numbering none (their normals are known).
 class SplitFaces {
 public:
     /// Takes the split (source faces ascending), the input mesh, the altered faces (ascending:
     /// the split's own, or with the faces of moved corners) and the moved flags (#V or empty).
     SplitFaces(const SplitMesh& output, const Mesh& input, const std::vector<Index>& altered,
-               [[maybe_unused]] std::span<const std::uint8_t> moved)
+               [[maybe_unused]] std::span<const std::uint8_t> moved, bool whole_apart)
         : number_(input.face_count(), kNoIndex) {
         const Index* source = output.source_face.data();
         const Index count = static_cast<Index>(output.source_face.size());
@@ -150,7 +151,8 @@ public:
             face_.push_back(f);
             first_output_.push_back(o);
             first_piece_.push_back(piece_count_);
-            piece_count_ += end - o;
+            // A face with points comes out as two pieces or more: one is the face left whole.
+            if (end - o > 1 || !whole_apart) piece_count_ += end - o;
             extra += end - o - 1;
         }
         first_piece_.push_back(piece_count_);
@@ -162,11 +164,15 @@ public:
     Index face(Index i) const { return face_[i]; }
     /// The number of input face f among the split faces, or kNoIndex if f was left whole.
     Index number(Index f) const { return number_[f]; }
-    /// The pieces of split face i: numbers first_piece(i) .. first_piece(i + 1) - 1, output
-    /// faces first_output(i) on.
+    /// The pieces of split face i: output faces first_output(i) on, numbers first_piece(i) ..
+    /// first_piece(i + 1) - 1 unless the face is whole (is_whole()).
     Index first_piece(Index i) const { return first_piece_[i]; }
     Index first_output(Index i) const { return first_output_[i]; }
-    Index piece_count(Index i) const { return first_piece_[i + 1] - first_piece_[i]; }
+    /// Split face i is left whole, its corners moved, and numbers no piece (`whole_apart`).
+    bool is_whole(Index i) const { return first_piece_[i + 1] == first_piece_[i]; }
+    Index piece_count(Index i) const {
+        return is_whole(i) ? 1 : first_piece_[i + 1] - first_piece_[i];
+    }
 
 private:
     /// Whether the split faces are those a scan of every output face finds: the runs of more
@@ -214,15 +220,17 @@ std::vector<Index> altered_with_moves(const SplitMesh& output,
 class HarmChecker {
 public:
     HarmChecker(const InputSurface& input, const SplitMesh& output, const HarmCheckOptions& options,
-                std::span<const std::uint8_t> changed, std::span<const std::uint8_t> moved)
+                std::span<const std::uint8_t> changed, const MovedVertices& moves)
         : input_(input),
           output_(output),
-          moved_(moved),
+          moved_(moves.moved),
+          moved_normals_(moves.face_normals),
           min_fold_cosine_(std::cos(options.fold_angle_deg * std::numbers::pi / 180.0)),
           half_fold_cosine_(std::cos(options.fold_angle_deg * std::numbers::pi / 360.0)),
           check_crossings_(options.check_crossings),
           split_(output, input.mesh,
-                 moved.empty() ? output.altered_faces : altered_with_moves(output, moved), moved),
+                 moved_.empty() ? output.altered_faces : altered_with_moves(output, moved_), moved_,
+                 !moved_.empty()),
           piece_normal_(split_.piece_count()),
           split_box_(split_.size()),
           harmful_(split_.size(), 0) {
@@ -269,9 +277,13 @@ private:
     const Triangle& piece_triangle(Index i, Index k) const {
         return output_.mesh.triangles[split_.first_output(i) + k];
     }
+    /// The unit normal of piece k of split face i.
+    const Vec3& piece_normal(Index i, Index k) const {
+        return split_.is_whole(i) ? moved_normals_[split_.face(i)]
+                                  : piece_normal_[split_.first_piece(i) + k];
+    }
     Shape piece_shape(Index i, Index k) const {
-        return Shape(piece_triangle(i, k), output_.mesh.positions,
-                     piece_normal_[split_.first_piece(i) + k]);
+        return Shape(piece_triangle(i, k), output_.mesh.positions, piece_normal(i, k));
     }
 
     /// Which split faces to judge (all, or those within two rings of a changed face), and which
@@ -319,8 +331,10 @@ private:
             Box3 box;
             for (Index k = 0; k < split_.piece_count(i); ++k) {
                 const Triangle& t = piece_triangle(i, k);
-                piece_normal_[split_.first_piece(i) + k] =
-                    triangle_normal(x[t[0]], x[t[1]], x[t[2]]);
+                if (!split_.is_whole(i)) {
+                    piece_normal_[split_.first_piece(i) + k] =
+                        triangle_normal(x[t[0]], x[t[1]], x[t[2]]);
+                }
                 box.extend(x[t[0]]).extend(x[t[1]]).extend(x[t[2]]);
             }
             split_box_[i] = OuterBox(box);
@@ -349,7 +363,7 @@ private:
                 for (Index k = around.first[v - input_vertices];
                      k < around.first[v - input_vertices + 1]; ++k) {
                     const Index o = around.output[k];
-                    fan.add(output_.mesh.triangles[o], v, piece_normal_[piece_of(o)]);
+                    fan.add(output_.mesh.triangles[o], v, normal_of_piece(o));
                 }
             }
             simple_fan_[v] = is_simple_fan(output_.mesh.positions, v, fan);
@@ -369,16 +383,16 @@ private:
             for (Index k = 0; k < split_.piece_count(j); ++k) {
                 const Triangle& t = piece_triangle(j, k);
                 if (t[0] == v || t[1] == v || t[2] == v) {
-                    fan.add(t, v, piece_normal_[split_.first_piece(j) + k]);
+                    fan.add(t, v, piece_normal(j, k));
                 }
             }
         }
     }
 
-    /// The piece number of output face o, a piece of a split face.
-    Index piece_of(Index o) const {
+    /// The normal of output face o, a piece of a split face.
+    const Vec3& normal_of_piece(Index o) const {
         const Index i = split_.number(output_.source_face[o]);
-        return split_.first_piece(i) + (o - split_.first_output(i));
+        return piece_normal(i, o - split_.first_output(i));
     }
 
     /// Whether output vertex v is an input vertex in its input place: not a new point, not
@@ -427,8 +441,10 @@ private:
         const std::array<bool, 6> against = turning_against_some(i, scratch);
         const bool may_fold = may_fold_anywhere(i);
         for (Index k = 0; k < split_.piece_count(i); ++k) {
-            const Index c = split_.first_piece(i) + k;
-            if (against[k]) verdict.turned += is_turned(f, piece_triangle(i, k), c, k, scratch);
+            if (against[k]) {
+                verdict.turned +=
+                    is_turned(f, piece_triangle(i, k), piece_normal(i, k), k, scratch);
+            }
             if (may_fold) verdict.folded += is_folded(i, k);
         }
         if (check_crossings_) verdict.crossing += count_crossing_pieces(i, scratch.faces);
@@ -483,7 +499,7 @@ private:
         std::array<Vec3, 6> m;
         std::array<bool, 6> some{};
         for (Index k = 0; k < count; ++k) {
-            m[k] = piece_normal_[split_.first_piece(i) + k];
+            m[k] = piece_normal(i, k);
             some[k] = m[k].isZero(0.0);
         }
         for (std::size_t j = 0; j < scratch.faces.size(); ++j) {  // Bound: the two-ring's faces
@@ -498,11 +514,11 @@ private:
         return some;
     }
 
-    /// (a) Whether piece t (number c) of split face f turns more than 90 degrees against all
-    /// the input faces nearest one of its query points (its vertices and centroid; ties go to
-    /// the piece), or has no area. Called for the pieces that turn against some candidate.
-    bool is_turned(Index f, const Triangle& t, Index c, Index k, Scratch& candidates) const {
-        const Vec3& n = piece_normal_[c];
+    /// (a) Whether piece t (piece k, normal n) of split face f turns more than 90 degrees
+    /// against all the input faces nearest one of its query points (its vertices and centroid;
+    /// ties go to the piece), or has no area. Called for the pieces that turn against some
+    /// candidate.
+    bool is_turned(Index f, const Triangle& t, const Vec3& n, Index k, Scratch& candidates) const {
         if (n.isZero(0.0)) return true;
         ensure_boxes(candidates);
         const auto& x = output_.mesh.positions;
@@ -585,8 +601,8 @@ private:
         auto all_within = [&](Index g) {
             const Index j = split_.number(g);
             if (j == kNoIndex) return within(input_.normals.face[g]);
-            for (Index c = split_.first_piece(j); c < split_.first_piece(j + 1); ++c) {
-                if (!within(piece_normal_[c])) return false;
+            for (Index k = 0; k < split_.piece_count(j); ++k) {
+                if (!within(piece_normal(j, k))) return false;
             }
             return true;
         };
@@ -603,11 +619,10 @@ private:
     /// replace did not (a piece and its own face's pieces replace one face).
     bool is_folded(Index i, Index k) const {
         const Index f = split_.face(i);
-        const Index c = split_.first_piece(i) + k;
         const Triangle& t = piece_triangle(i, k);
         for (int e = 0; e < 3; ++e) {
-            const std::optional<Across> across = face_across(i, c, t[(e + 1) % 3], t[e]);
-            if (!across || piece_normal_[c].dot(*across->normal) >= min_fold_cosine_) continue;
+            const std::optional<Across> across = face_across(i, k, t[(e + 1) % 3], t[e]);
+            if (!across || piece_normal(i, k).dot(*across->normal) >= min_fold_cosine_) continue;
             const Index g = across->source;
             const bool input_folded =
                 g != f && input_.normals.face[f].dot(input_.normals.face[g]) < min_fold_cosine_;
@@ -622,10 +637,10 @@ private:
         const Vec3* normal;
     };
 
-    /// The output face other than piece c holding the directed edge a -> b, among the pieces
-    /// of split face i and the output faces of the faces across its edges, in that order;
-    /// none for a boundary or non-manifold edge.
-    std::optional<Across> face_across(Index i, Index c, Index a, Index b) const {
+    /// The output face other than piece k of split face i holding the directed edge a -> b,
+    /// among the pieces of i and the output faces of the faces across its edges, in that
+    /// order; none for a boundary or non-manifold edge.
+    std::optional<Across> face_across(Index i, Index k, Index a, Index b) const {
         auto holds = [&](const Triangle& t) {
             return (t[0] == a && t[1] == b) || (t[1] == a && t[2] == b) || (t[2] == a && t[0] == b);
         };
@@ -635,10 +650,9 @@ private:
                 if (holds(input_.mesh.triangles[g])) return Across{g, &input_.normals.face[g]};
                 return std::nullopt;
             }
-            for (Index k = 0; k < split_.piece_count(j); ++k) {
-                const Index other = split_.first_piece(j) + k;
-                if (other != c && holds(piece_triangle(j, k))) {
-                    return Across{g, &piece_normal_[other]};
+            for (Index m = 0; m < split_.piece_count(j); ++m) {
+                if ((j != i || m != k) && holds(piece_triangle(j, m))) {
+                    return Across{g, &piece_normal(j, m)};
                 }
             }
             return std::nullopt;
@@ -770,11 +784,12 @@ private:
     const InputSurface& input_;
     const SplitMesh& output_;
     std::span<const std::uint8_t> moved_;  ///< #V or empty: input vertices the output moved
+    std::span<const Vec3> moved_normals_;  ///< #F with `moved_`: the moved mesh's face normals
     double min_fold_cosine_;
     double half_fold_cosine_;  ///< of half the fold angle
     bool check_crossings_;
     SplitFaces split_;
-    std::vector<Vec3> piece_normal_;       ///< per piece (numbered as SplitFaces numbers them)
+    std::vector<Vec3> piece_normal_;       ///< per numbered piece (SplitFaces): its unit normal
     std::vector<OuterBox> split_box_;      ///< per split face: around the box of its pieces
     std::vector<std::uint8_t> judged_;     ///< per split face: judged by this check
     std::vector<std::uint8_t> described_;  ///< per split face: its pieces' normals made
@@ -791,7 +806,7 @@ private:
 
 HarmReport check_harm(const InputSurface& input, const SplitMesh& output,
                       const HarmCheckOptions& options, std::span<const std::uint8_t> changed,
-                      std::span<const std::uint8_t> moved) {
+                      const MovedVertices& moves) {
     if (!(options.fold_angle_deg > 90.0 && options.fold_angle_deg <= 180.0)) {
         throw InvalidInput("harm check: fold angle must lie in (90, 180] degrees");
     }
@@ -799,13 +814,19 @@ HarmReport check_harm(const InputSurface& input, const SplitMesh& output,
         throw InvalidInput("harm check: " + std::to_string(changed.size()) + " change flags for " +
                            std::to_string(input.mesh.face_count()) + " faces");
     }
-    if (!moved.empty() && moved.size() != input.mesh.vertex_count()) {
-        throw InvalidInput("harm check: " + std::to_string(moved.size()) + " move flags for " +
-                           std::to_string(input.mesh.vertex_count()) + " vertices");
+    if (!moves.moved.empty() && moves.moved.size() != input.mesh.vertex_count()) {
+        throw InvalidInput("harm check: " + std::to_string(moves.moved.size()) +
+                           " move flags for " + std::to_string(input.mesh.vertex_count()) +
+                           " vertices");
+    }
+    if (!moves.moved.empty() && moves.face_normals.size() != input.mesh.face_count()) {
+        throw InvalidInput("harm check: " + std::to_string(moves.face_normals.size()) +
+                           " moved face normals for " + std::to_string(input.mesh.face_count()) +
+                           " faces");
     }
     RESHARP_EXPENSIVE_ASSERT(output.source_face.size() == output.mesh.face_count());
     RESHARP_EXPENSIVE_ASSERT(std::is_sorted(output.source_face.begin(), output.source_face.end()));
-    return HarmChecker(input, output, options, changed, moved).run();
+    return HarmChecker(input, output, options, changed, moves).run();
 }
 
 }  // namespace resharp

@@ -34,12 +34,22 @@ struct HarmReport {
     bool is_harmless() const { return harmful_faces.empty(); }
 };
 
+/// Near-surface restoration's moves (near/vertex_moves.h), as check_harm() reads them.
+struct MovedVertices {
+    /// Per input vertex (#V): its place in the split is not its input place. Empty: none moved.
+    std::span<const std::uint8_t> moved;
+    /// Per input face (#F), given with `moved`: the unit normals of the moved mesh that was
+    /// split, as surface_normals() gives them; a face the split left whole keeps its own. Not
+    /// made again here: on a midpoint mesh, whose every vertex moves, they took 24 bytes a face.
+    std::span<const Vec3> face_normals;
+};
+
 /// Takes the input surface and its split; checks the pieces of every split face, the faces
 /// the split lists as altered (faces left whole are the input's own and are not judged).
 /// Near-surface restoration splits a copy of the input with vertices moved (near/vertex_moves.h)
-/// and passes `moved` (#V): the input vertices whose place in the split is not their input
-/// place. They count as new vertices, and every face with one as a split face, judged against
-/// the input surface it replaces; empty: none moved.
+/// and passes `moves`: the input vertices whose place in the split is not their input place
+/// count as new vertices, and every face with one as a split face, judged against the input
+/// surface it replaces.
 /// A fault between a piece and another split face's piece blames both faces.
 ///
 /// The crossing check (c) tests a piece against the output faces of the input faces within two
@@ -58,10 +68,10 @@ struct HarmReport {
 /// its own pieces and those of the faces within two rings of it, so elsewhere it stands (no
 /// harm). The counts then cover the judged faces alone. Empty: every split face is judged.
 /// \throws InvalidInput if the fold angle is not in (90, 180], `changed` is neither empty nor
-///         one flag per input face, or `moved` neither empty nor one flag per input vertex.
+///         one flag per input face, or `moves` neither empty nor one flag per input vertex and
+///         one normal per input face.
 HarmReport check_harm(const InputSurface& input, const SplitMesh& output,
                       const HarmCheckOptions& options = {},
-                      std::span<const std::uint8_t> changed = {},
-                      std::span<const std::uint8_t> moved = {});
+                      std::span<const std::uint8_t> changed = {}, const MovedVertices& moves = {});
 
 }  // namespace resharp
