@@ -140,6 +140,28 @@ TEST(NearSurface, MidpointVerticesOfCurvedFacesDoNotMoveOntoChords) {
                                     << after / static_cast<double>(input.vertex_count()) << " mm";
 }
 
+/// Where the moved mesh's rounds end without a harmless split, a midpoint mesh is restored as
+/// an exact one: the input's detection, released during the smoothing rounds, is made anew for
+/// it. Here one harm round is allowed, and the tilted wedge's moved mesh needs two (as measured
+/// when this test was written).
+TEST(NearSurface, AMidpointMeshWhoseMovesFailIsRestoredOnTheExactPath) {
+    const Case c{SmallPart::TiltedWedge, sim::Mesher::Midpoint, VertexMode::Midpoint};
+    const Mesh input = test::small_part(c.part, 0.5, c.mesher);
+    RestoreOptions o = near_options(c);
+    o.max_harm_rounds = 1;
+    const RestoreResult near = restore(input, o);
+    ASSERT_EQ(near.report.moved_vertices, 0u);
+    ASSERT_GT(near.report.moves_undone, 0u);
+    RestoreOptions exact_options = o;
+    exact_options.vertices.mode = VertexMode::Exact;
+    const RestoreResult exact = restore(input, exact_options);
+    EXPECT_GT(exact.report.edge_points_inserted, 0u);
+    EXPECT_EQ(near.report.edge_points_inserted, exact.report.edge_points_inserted);
+    EXPECT_EQ(near.report.feature_patches, exact.report.feature_patches);
+    EXPECT_EQ(near.mesh.positions, exact.mesh.positions);
+    EXPECT_EQ(near.mesh.triangles, exact.mesh.triangles);
+}
+
 TEST(NearSurface, ExactModeMovesNothing) {
     const Mesh input = test::small_part(SmallPart::PocketedBlock, 0.5, sim::Mesher::SurfaceNets);
     RestoreOptions o =
