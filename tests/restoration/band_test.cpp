@@ -60,15 +60,38 @@ TEST(BandClassification, BoxCrossingEdgesAndCornersAreTheOraclesOwn) {
     }
 }
 
+TEST(FeatureNormals, HoldNormalsCorrectionsAndFieldsOfTheVerticesGivenRoomAlone) {
+    FeatureNormals n(10);
+    n.add(7);
+    n.normal_at(7) = Vec3(0, 0, 1);
+    n.fit_correction_at(7) = 2.5f;
+    EXPECT_EQ(n.normal(7), Vec3(0, 0, 1));
+    EXPECT_EQ(n.fit_correction_deg(7), 2.5f);
+    EXPECT_TRUE(n.normal(3).isZero(0.0));  // no room made: none
+    EXPECT_EQ(n.fit_correction_deg(3), 0.0f);
+    EXPECT_TRUE(n.field(7).n0.isZero(0.0));  // no fields kept
+    n.keep_fields();
+    n.add(2);
+    n.add(7);  // room once: its entries stay
+    EXPECT_EQ(n.normal(7), Vec3(0, 0, 1));
+    n.field_at(7) = {Vec3(0, 0, 1), Eigen::Matrix3d::Identity()};
+    EXPECT_EQ(n.field(7).gradient, Eigen::Matrix3d::Identity());
+    EXPECT_TRUE(n.field(2).n0.isZero(0.0) && n.normal(2).isZero(0.0));
+    n.drop_field(7);
+    EXPECT_TRUE(n.field(7).n0.isZero(0.0) && n.field(7).gradient.isZero(0.0));
+    EXPECT_EQ(n.normal(7), Vec3(0, 0, 1));  // the normal stays
+    EXPECT_TRUE(FeatureNormals().field(0).n0.isZero(0.0));
+}
+
 TEST(FeatureNormals, BandVerticesOfABoxGetTheirFacesExactNormal) {
     const test::SampledShape shape = test::sampled_box();
     const Classified c = classify(shape.mesh);
-    const std::vector<Vec3> n = fitted_normals(shape.mesh, c).normal;
+    const FeatureNormals n = fitted_normals(shape.mesh, c);
     std::size_t checked = 0;
     for (Index f = 0; f < shape.mesh.face_count(); ++f) {
         if (c.bands.face_role[f] == BandRole::None) continue;
         for (Index v : shape.mesh.triangles[f]) {
-            EXPECT_LT((n[v] - shape.exact_normals[v]).norm(), 1e-12) << "vertex " << v;
+            EXPECT_LT((n.normal(v) - shape.exact_normals[v]).norm(), 1e-12) << "vertex " << v;
             ++checked;
         }
     }
@@ -166,11 +189,11 @@ TEST(FeatureNormals, CurvatureOfTheHoleWallIsOneOverItsRadius) {
     const double r = 3.08;
     std::size_t wall = 0, flat = 0, close = 0;
     for (Index v = 0; v < shape.mesh.vertex_count(); ++v) {
-        if (fit.normal[v].isZero(0.0)) continue;
-        const Eigen::Matrix3d frame = tangent_frame(fit.normal[v]);
-        const bool fitted = fit.field(v).n0 == fit.normal[v];  // the fit placed the normal
+        if (fit.normal(v).isZero(0.0)) continue;
+        const Eigen::Matrix3d frame = tangent_frame(fit.normal(v));
+        const bool fitted = fit.field(v).n0 == fit.normal(v);  // the fit placed the normal
         const Eigen::Vector3d k =
-            fitted ? quadric_from_normal_slope(shape.mesh.positions[v], fit.normal[v],
+            fitted ? quadric_from_normal_slope(shape.mesh.positions[v], fit.normal(v),
                                                fit.field(v).gradient)
                          .curvature
                    : Eigen::Vector3d::Zero();
@@ -181,7 +204,7 @@ TEST(FeatureNormals, CurvatureOfTheHoleWallIsOneOverItsRadius) {
         ++wall;
         // The curvature along the wall's horizontal tangent and along z.
         const Eigen::Vector2d across =
-            (frame.leftCols<2>().transpose() * fit.normal[v].cross(Vec3::UnitZ())).normalized();
+            (frame.leftCols<2>().transpose() * fit.normal(v).cross(Vec3::UnitZ())).normalized();
         const Eigen::Vector2d along = (frame.leftCols<2>().transpose() * Vec3::UnitZ());
         const Eigen::Matrix2d hessian{{k[0], k[1]}, {k[1], k[2]}};
         const double k_across = across.dot(hessian * across), k_along = along.dot(hessian * along);
@@ -205,7 +228,7 @@ TEST(FeatureNormals, FitLeavesOutFacesBeyondACreaseInsideThePatch) {
     auto normal_at_centre = [&](double max_residual_deg) {
         return feature_normals(mesh, connectivity, face_normals(mesh), face_patch, vertex_patch,
                                bands, {.max_fit_residual_deg = max_residual_deg})
-            .normal[sheet.centre];
+            .normal(sheet.centre);
     };
     const Vec3 flat(0.0, 0.0, 1.0);
     EXPECT_LT((normal_at_centre(1.4) - flat).norm(), 1e-9);

@@ -52,7 +52,7 @@ TEST(Guard, RefusesAPieceTurnedAgainstTheFaceItReplaces) {
     points.points[0] = Vec3(-0.2225, 0.1, 0.75);
     const Vec3 piece =
         (s.mesh.positions[1] - s.mesh.positions[0]).cross(points.points[0] - s.mesh.positions[0]);
-    ASSERT_GT(piece.dot(s.feature_normals.normal[0]), 0.0);
+    ASSERT_GT(piece.dot(s.feature_normals.normal(0)), 0.0);
     ASSERT_LT(piece.dot(s.normals.face[0]), 0.0);
     const GuardedPoints g = guard(s, points);
     EXPECT_EQ(g.report.refused_by_guard, 1u);
@@ -74,7 +74,7 @@ struct CornerWithNeighbours {
         s.mesh.positions.assign(positions.begin(), positions.end());
         s.mesh.triangles = {{0, 1, 2}, {1, 0, 3}, {2, 1, 4}, {0, 2, 5}};
         s.rebuild();
-        s.feature_normals.normal.assign(normals.begin(), normals.end());
+        s.set_feature_normals({normals.begin(), normals.end()});
         BandClassification bands;
         bands.face_role = {BandRole::Corner, BandRole::Edge, BandRole::Edge, BandRole::Edge};
         for (Index h = 0; h < 3 * s.mesh.face_count(); ++h) {

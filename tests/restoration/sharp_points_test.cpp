@@ -175,12 +175,12 @@ test::Strip boss_strip(const Vec3& shift) {
                         b1 + shift};
     s.mesh.triangles = {{0, 2, 1}, {1, 2, 3}};
     s.rebuild();
-    s.feature_normals.normal = {Vec3::UnitZ(), Vec3::UnitZ(), b0.normalized(),
-                                Vec3(b1.x(), b1.y(), 0).normalized()};
-    s.feature_normals.field_slot = {kNoIndex, kNoIndex, 0, 1};
+    s.set_feature_normals(
+        {Vec3::UnitZ(), Vec3::UnitZ(), b0.normalized(), Vec3(b1.x(), b1.y(), 0).normalized()});
+    s.feature_normals.keep_fields();
     for (Index v : {2, 3}) {
         const Eigen::Matrix3d slope = Eigen::Vector3d(1 / r, 1 / r, 0).asDiagonal();
-        s.feature_normals.fields.push_back({s.feature_normals.normal[v], slope});
+        s.feature_normals.field_at(v) = {s.feature_normals.normal(v), slope};
     }
     return s;
 }
@@ -195,7 +195,7 @@ TEST(SharpPoints, SecondOrderPointMovesWithThePart) {
     ASSERT_EQ(base.first_order_fallbacks, 0u);
     const test::Strip origin = boss_strip(Vec3::Zero());
     const auto first_order = edge_point(origin.mesh.positions[1], Vec3::UnitZ(),
-                                        origin.mesh.positions[2], origin.feature_normals.normal[2]);
+                                        origin.mesh.positions[2], origin.feature_normals.normal(2));
     ASSERT_TRUE(first_order);
     EXPECT_GT((base.points[0] - *first_order).norm(), 1e-3);  // the solve moved it
     for (const Vec3& shift : {Vec3(1e4, 1e4, 1e4), Vec3(-3.3e3, 7.1e2, 1e4)}) {

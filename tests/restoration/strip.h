@@ -18,13 +18,26 @@ struct Strip {
     SurfaceNormals normals;
     FeatureNormals feature_normals;  ///< exact: the top's and the side's normals
 
+    std::vector<Vec3> given_normals;  ///< per vertex: its feature normal (zero: none)
+
     InputSurface surface() const { return {mesh, connectivity, normals}; }
-    /// Rebuilds adjacency and normals after the mesh changed.
+    /// Rebuilds adjacency and normals after the mesh changed; new vertices have no feature
+    /// normal.
     void rebuild() {
         connectivity = build_connectivity(mesh);
         normals = surface_normals(mesh, connectivity);
-        feature_normals.normal.resize(mesh.vertex_count(), Vec3::Zero());
-        feature_normals.fit_correction_deg.resize(mesh.vertex_count(), 0.0f);
+        given_normals.resize(mesh.vertex_count(), Vec3::Zero());
+        set_feature_normals(given_normals);
+    }
+    /// Feature normals `given` (per vertex; zero: none), without corrections or fields.
+    void set_feature_normals(std::vector<Vec3> given) {
+        given_normals = std::move(given);
+        feature_normals = FeatureNormals(given_normals.size());
+        for (Index v = 0; v < given_normals.size(); ++v) {
+            if (given_normals[v].isZero(0.0)) continue;
+            feature_normals.add(v);
+            feature_normals.normal_at(v) = given_normals[v];
+        }
     }
 };
 
@@ -32,7 +45,7 @@ inline Strip make_strip() {
     Strip s;
     s.mesh.positions = {{-0.3, 0, 0}, {-0.25, 0, 1}, {0, -0.2, 0.5}, {0, -0.3, 1.5}};
     s.mesh.triangles = {{0, 1, 2}, {1, 3, 2}};
-    s.feature_normals.normal = {{0, 1, 0}, {0, 1, 0}, {1, 0, 0}, {1, 0, 0}};
+    s.given_normals = {{0, 1, 0}, {0, 1, 0}, {1, 0, 0}, {1, 0, 0}};
     s.rebuild();
     return s;
 }

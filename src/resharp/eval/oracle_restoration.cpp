@@ -33,11 +33,13 @@ BandClassification bands_of(const Mesh& mesh, const Connectivity& connectivity,
 /// feature_normals() leaves vertices off the bands; exact normals need no fit margin.
 FeatureNormals exact_feature_normals(const Mesh& mesh, const BandClassification& bands,
                                      const Oracle& oracle) {
-    FeatureNormals normals{std::vector<Vec3>(mesh.vertex_count(), Vec3::Zero()),
-                           std::vector<float>(mesh.vertex_count(), 0.0f)};
+    FeatureNormals normals(mesh.vertex_count());
     for (Index f = 0; f < mesh.face_count(); ++f) {
         if (bands.face_role[f] == BandRole::None) continue;
-        for (Index v : mesh.triangles[f]) normals.normal[v] = oracle.normals[v];
+        for (Index v : mesh.triangles[f]) {
+            normals.add(v);
+            normals.normal_at(v) = oracle.normals[v];
+        }
     }
     return normals;
 }
@@ -74,12 +76,13 @@ ExactNormalRestoration restore_with_exact_normals(const Mesh& mesh, const Oracle
     check_oracle(oracle, mesh);
     Detection d = detect_bands(mesh, build_connectivity(mesh), options);
     for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
-        if (d.feature_normals.normal[v].isZero(0.0)) continue;
-        d.feature_normals.normal[v] = oracle.normals[v];
-        d.feature_normals.fit_correction_deg[v] = 0.0f;  // exact normals need no margin
+        const Index w = static_cast<Index>(v);
+        if (d.feature_normals.normal(w).isZero(0.0)) continue;
+        d.feature_normals.normal_at(w) = oracle.normals[v];
+        d.feature_normals.fit_correction_at(w) = 0.0f;  // exact normals need no margin
         // Nor a fitted field: its shape is not the exact surface's, and the guard would take its
         // angle to the exact normal as a margin.
-        if (!d.feature_normals.field_slot.empty()) d.feature_normals.field_slot[v] = kNoIndex;
+        d.feature_normals.drop_field(w);
     }
     BandRestoration restored = restore_bands(d.surface(mesh), d.bands, d.feature_normals, options);
     return {std::move(restored.output.mesh),

@@ -100,7 +100,7 @@ BandClassification drop_smooth_crossings(const Mesh& mesh, const Connectivity& c
     // the edge, one smooth surface's meet there.
     auto carried = [&](Index v, const Vec3& x) -> Vec3 {
         const NormalField& field = normals.field(v);
-        if (field.n0.isZero(0.0)) return normals.normal[v];
+        if (field.n0.isZero(0.0)) return normals.normal(v);
         return field.n0 + field.gradient * (x - mesh.positions[v]);
     };
     // Only edges go, so only the faces of the edges that go change role.
@@ -114,7 +114,7 @@ BandClassification drop_smooth_crossings(const Mesh& mesh, const Connectivity& c
             const Index twin = connectivity.twin[h];
             if (twin < h) continue;  // each crossing edge once
             const Index u = t[k], v = t[(k + 1) % 3];
-            if (normals.normal[u].isZero(0.0) || normals.normal[v].isZero(0.0)) continue;
+            if (normals.normal(u).isZero(0.0) || normals.normal(v).isZero(0.0)) continue;
             const Vec3 middle = 0.5 * (mesh.positions[u] + mesh.positions[v]);
             const Vec3 nu = carried(u, middle), nv = carried(v, middle);
             if (nu.dot(nv) > min_cosine * nu.norm() * nv.norm()) set_crossing(h, twin, false, out);

@@ -263,17 +263,10 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
         if (bands.face_role[f] == BandRole::None) continue;
         for (Index v : mesh.triangles[f]) needed[v] = 1;
     }
-    FeatureNormals result{std::vector<Vec3>(mesh.vertex_count(), Vec3::Zero()),
-                          std::vector<float>(mesh.vertex_count(), 0.0f),
-                          {},
-                          std::vector<Index>(mesh.vertex_count(), kNoIndex)};
-    if (options.estimate == NormalEstimate::LinearFit) {
-        for (Index v = 0; v < mesh.vertex_count(); ++v) {
-            if (needed[v] && vertex_patch[v] != kNoIndex) {
-                result.field_slot[v] = static_cast<Index>(result.fields.size());
-                result.fields.emplace_back();
-            }
-        }
+    FeatureNormals result(mesh.vertex_count());
+    if (options.estimate == NormalEstimate::LinearFit) result.keep_fields();
+    for (Index v = 0; v < mesh.vertex_count(); ++v) {
+        if (needed[v] && vertex_patch[v] != kNoIndex) result.add(v);
     }
     tbb::parallel_for(
         tbb::blocked_range<Index>(0, static_cast<Index>(mesh.vertex_count()), 4096),
@@ -289,10 +282,9 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
                 }
                 if (options.estimate == NormalEstimate::LinearFit && !n.isZero(0.0)) {
                     refine_by_fit(mesh, connectivity, face_normals, face_patch, vertex_patch, v,
-                                  fit, n, result.fit_correction_deg[v],
-                                  result.fields[result.field_slot[v]], scratch);
+                                  fit, n, result.fit_correction_at(v), result.field_at(v), scratch);
                 }
-                result.normal[v] = n;
+                result.normal_at(v) = n;
             }
         });
     return result;

@@ -44,26 +44,62 @@ struct NormalField {
     Eigen::Matrix3d gradient = Eigen::Matrix3d::Zero();  ///< d n / d x, 1/mm
 };
 
-struct FeatureNormals {
-    std::vector<Vec3> normal;  ///< per vertex (#V), as described at feature_normals()
-    /// Per vertex (#V): how far (degrees) the linear fit moved eq. 5.1's normal: zero on planes,
-    /// a few degrees on curved features. The split keeps that much margin when it checks that
-    /// pieces face the way of their surface.
-    std::vector<float> fit_correction_deg;
-    /// The feature's normal field about each band vertex as the linear fit found it
-    /// (NormalEstimate::LinearFit; zero where there was none, as on planes), also where the fit
-    /// was not trusted to replace eq. 5.1's normal. drop_smooth_crossings() carries it across a
-    /// band. Kept for band vertices only, a tenth of the vertices or fewer: 96 bytes each would
-    /// cost 48 bytes per triangle for all of them, a sixth of the memory budget.
-    std::vector<NormalField> fields;
-    /// Per vertex (#V, or empty): v's entry in `fields`, kNoIndex for a vertex off the bands.
-    std::vector<Index> field_slot;
+/// The feature normals of the band vertices. Kept for those alone, a tenth of the vertices or
+/// fewer: a normal, its correction and a field for every vertex would cost 62 bytes per
+/// triangle, a fifth of the memory budget.
+class FeatureNormals {
+public:
+    FeatureNormals() = default;
+    /// No normal at any of `vertex_count` vertices.
+    explicit FeatureNormals(std::size_t vertex_count) : slot_(vertex_count, kNoIndex) {}
 
-    /// v's field, or a zero one (no field) when it has none.
+    /// v's normal, as described at feature_normals(); zero where it has none.
+    const Vec3& normal(Index v) const {
+        static const Vec3 kZero = Vec3::Zero();
+        return has_slot(v) ? normals_[slot_[v]] : kZero;
+    }
+    /// How far (degrees) the linear fit moved eq. 5.1's normal at v: zero on planes, a few
+    /// degrees on curved features. The split keeps that much margin when it checks that
+    /// pieces face the way of their surface.
+    float fit_correction_deg(Index v) const { return has_slot(v) ? corrections_[slot_[v]] : 0.0f; }
+    /// The feature's normal field about v as the linear fit found it (NormalEstimate::
+    /// LinearFit; zero where there was none, as on planes), also where the fit was not trusted
+    /// to replace eq. 5.1's normal. drop_smooth_crossings() carries it across a band.
     const NormalField& field(Index v) const {
         static const NormalField kNone;
-        return field_slot.empty() || field_slot[v] == kNoIndex ? kNone : fields[field_slot[v]];
+        return has_slot(v) && !fields_.empty() ? fields_[slot_[v]] : kNone;
     }
+
+    /// Makes room for v's normal, zero, with no correction and no field, if it has none.
+    void add(Index v) {
+        if (has_slot(v)) return;
+        slot_[v] = static_cast<Index>(normals_.size());
+        normals_.push_back(Vec3::Zero());
+        corrections_.push_back(0.0f);
+        if (with_fields_) fields_.emplace_back();
+    }
+    /// Keeps a field for every vertex with a normal (LinearFit), from now on.
+    void keep_fields() {
+        with_fields_ = true;
+        fields_.resize(normals_.size());
+    }
+    /// Takes v's field away (a zero field: none), if it has one.
+    void drop_field(Index v) {
+        if (has_slot(v) && !fields_.empty()) fields_[slot_[v]] = NormalField{};
+    }
+    /// v's entries, for a vertex add() made room for.
+    Vec3& normal_at(Index v) { return normals_[slot_[v]]; }
+    float& fit_correction_at(Index v) { return corrections_[slot_[v]]; }
+    NormalField& field_at(Index v) { return fields_[slot_[v]]; }
+
+private:
+    bool has_slot(Index v) const { return !slot_.empty() && slot_[v] != kNoIndex; }
+
+    std::vector<Index> slot_;          ///< per vertex (#V): its entry below, or kNoIndex
+    std::vector<Vec3> normals_;        ///< per entry
+    std::vector<float> corrections_;   ///< per entry
+    std::vector<NormalField> fields_;  ///< per entry with keep_fields(), else empty
+    bool with_fields_ = false;
 };
 
 /// Per vertex (#V): at each vertex of an edge or corner triangle, N = sum(theta_i N_i) /

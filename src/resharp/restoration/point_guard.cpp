@@ -44,20 +44,20 @@ struct ReferenceNormals {
     const std::vector<Vec3>& vertex;
     /// v's reference for a piece of a face whose longest edge is `extent` long.
     Reference at(Index v, double extent) const {
-        if (feature.normal[v].isZero(0.0)) return {vertex[v], 30.0};
-        return {feature.normal[v], std::min(margin_deg(v, extent), 30.0)};
+        if (feature.normal(v).isZero(0.0)) return {vertex[v], 30.0};
+        return {feature.normal(v), std::min(margin_deg(v, extent), 30.0)};
     }
     const Vec3& normal(Index v) const {
-        return feature.normal[v].isZero(0.0) ? vertex[v] : feature.normal[v];
+        return feature.normal(v).isZero(0.0) ? vertex[v] : feature.normal(v);
     }
 
 private:
     double margin_deg(Index v, double extent) const {
         const NormalField& field = feature.field(v);
-        if (field.n0.isZero(0.0) || field.n0 == feature.normal[v])
-            return feature.fit_correction_deg[v];
+        if (field.n0.isZero(0.0) || field.n0 == feature.normal(v))
+            return feature.fit_correction_deg(v);
         const double turn_deg = 0.5 * extent * field.gradient.norm() * 180.0 / std::numbers::pi;
-        return std::max(angle_deg(field.n0, feature.normal[v]), turn_deg);
+        return std::max(angle_deg(field.n0, feature.normal(v)), turn_deg);
     }
 };
 

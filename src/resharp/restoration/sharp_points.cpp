@@ -124,14 +124,14 @@ private:
     /// (drop_smooth_crossings) and planes, whose field is zero, give the tangent plane.
     bool flat(Index v) const {
         const NormalField& field = features_.field(v);
-        return field.n0 != features_.normal[v] || field.gradient.isZero(0.0);
+        return field.n0 != features_.normal(v) || field.gradient.isZero(0.0);
     }
 
     /// v's surface with `origin` as the origin of coordinates.
     LocalQuadric surface(Index v, const Vec3& origin) const {
         const Eigen::Matrix3d slope =
             flat(v) ? Eigen::Matrix3d::Zero() : features_.field(v).gradient;
-        return quadric_from_normal_slope(Vec3(mesh_.positions[v] - origin), features_.normal[v],
+        return quadric_from_normal_slope(Vec3(mesh_.positions[v] - origin), features_.normal(v),
                                          slope);
     }
 
@@ -231,7 +231,7 @@ struct EdgePlacement {
 /// ends have feature normals: on the edge where eq. 5.4 holds; with second-order placement,
 /// where it fails, beyond the chord. Reads nothing another edge's placement writes.
 EdgePlacement edge_placement(const Mesh& mesh, const Connectivity& c,
-                             const BandClassification& bands, const std::vector<Vec3>& normals,
+                             const BandClassification& bands, const FeatureNormals& normals,
                              const SideSurfaces& sides, Index h) {
     EdgePlacement out;
     if (!bands.is_crossing[h] || c.twin[h] == kNoIndex) return out;
@@ -240,12 +240,12 @@ EdgePlacement edge_placement(const Mesh& mesh, const Connectivity& c,
     if (!vertex_swept_before(mesh, u, v)) return out;  // the twin places it
     const Vec3& a = mesh.positions[u];
     const Vec3& b = mesh.positions[v];
-    if (normals[u].isZero(0.0) || normals[v].isZero(0.0)) {
+    if (normals.normal(u).isZero(0.0) || normals.normal(v).isZero(0.0)) {
         out.fate = EdgeFate::MissingNormal;
         return out;
     }
-    const std::optional<Vec3> m = edge_point(a, normals[u], b, normals[v]);
-    const bool on_edge = m && passes_flip_test(a, normals[u], b, normals[v]);
+    const std::optional<Vec3> m = edge_point(a, normals.normal(u), b, normals.normal(v));
+    const bool on_edge = m && passes_flip_test(a, normals.normal(u), b, normals.normal(v));
     if (!m || (!on_edge && !sides.second_order())) {
         out.fate = EdgeFate::Refused;
         return out;
@@ -310,8 +310,7 @@ void place_points_beyond_chords(const Mesh& mesh, const Connectivity& c,
 /// §5.2: the points of every crossing edge; only faces with a crossing edge are looked at. Points
 /// on their edges first, in face order, then those inside faces.
 void place_edge_points(const Mesh& mesh, const Connectivity& c, const BandClassification& bands,
-                       const std::vector<Vec3>& normals, const SideSurfaces& sides,
-                       SharpPoints& out) {
+                       const FeatureNormals& normals, const SideSurfaces& sides, SharpPoints& out) {
     std::vector<Index> halfedges;  // of the faces with a crossing edge (few), in face order
     for (Index f = 0; f < bands.face_role.size(); ++f) {
         if (bands.face_role[f] == BandRole::None) continue;
@@ -349,12 +348,13 @@ bool is_spike(const Connectivity& c, const std::vector<Vec3>& face_normals,
 
 void place_corner_points(const Mesh& mesh, const Connectivity& c,
                          const std::vector<Vec3>& face_normals, const BandClassification& bands,
-                         const std::vector<Vec3>& normals, const SideSurfaces& sides,
+                         const FeatureNormals& normals, const SideSurfaces& sides,
                          double spike_angle_deg, SharpPoints& out) {
     for (Index f = 0; f < mesh.face_count(); ++f) {
         if (bands.face_role[f] != BandRole::Corner) continue;
         const Triangle& t = mesh.triangles[f];
-        const std::array<Vec3, 3> n{normals[t[0]], normals[t[1]], normals[t[2]]};
+        const std::array<Vec3, 3> n{normals.normal(t[0]), normals.normal(t[1]),
+                                    normals.normal(t[2])};
         if (n[0].isZero(0.0) || n[1].isZero(0.0) || n[2].isZero(0.0)) {
             ++out.missing_normal;
             continue;
@@ -407,8 +407,8 @@ SharpPoints place_sharp_points(const Mesh& mesh, const Connectivity& connectivit
     SharpPoints out;
     out.slots = PointSlots(mesh.face_count());
     const SideSurfaces sides(mesh, feature_normals, options.placement);
-    place_edge_points(mesh, connectivity, bands, feature_normals.normal, sides, out);
-    place_corner_points(mesh, connectivity, face_normals, bands, feature_normals.normal, sides,
+    place_edge_points(mesh, connectivity, bands, feature_normals, sides, out);
+    place_corner_points(mesh, connectivity, face_normals, bands, feature_normals, sides,
                         options.spike_angle_deg, out);
     RESHARP_EXPENSIVE_ASSERT(slots_follow_bands(connectivity, bands, out));
     return out;
