@@ -71,6 +71,28 @@ TEST(HarmCheck, AFaceTurnedByAMovedVertexIsJudgedWhereTheMoveIsGiven) {
     EXPECT_THROW(check_harm(s.surface(), moved, {}, {}, {b0_moved, {}}), InvalidInput);
 }
 
+TEST(HarmCheck, AFaceWithAPointLeftOnePieceIsJudgedByItsPieceNotTheMovedFace) {
+    // Face 0 (a0, a1, b0) as one piece (b0, a0, c), as two edges snapped onto its corner point
+    // leave it, c across the edge a0-b0 from a1: the piece is face 0 turned over. b1 is
+    // flagged moved, so face 1 is judged whole, by the normal given for it; face 0's piece must
+    // be judged by its own normal, not the one given for face 0.
+    const test::Strip s = test::make_strip();
+    const auto& x = s.mesh.positions;
+    SplitMesh split;
+    split.mesh.positions = x;
+    split.mesh.positions.push_back(x[0] + x[2] - x[1]);
+    split.mesh.triangles = {{2, 0, 4}, s.mesh.triangles[1]};
+    split.source_face = {0, 1};
+    split.point_of_new_vertex = {0};
+    split.split_faces = 1;
+    split.altered_faces = {0};
+    const std::vector<std::uint8_t> b1_moved{0, 0, 0, 1};
+    const HarmReport r = check_harm(s.surface(), split, {}, {}, {b1_moved, s.normals.face});
+    EXPECT_GE(r.turned, 1u);
+    EXPECT_EQ(r.harmful_faces, (std::vector<Index>{0}));
+    EXPECT_EQ(check_harm(s.surface(), split).harmful_faces, (std::vector<Index>{0}));
+}
+
 /// The strip with a triangle hanging from b0 into the space between face 0 and the sharp edge,
 /// where the pieces of the split go.
 test::Strip strip_with_blocker() {

@@ -151,8 +151,11 @@ public:
             face_.push_back(f);
             first_output_.push_back(o);
             first_piece_.push_back(piece_count_);
-            // A face with points comes out as two pieces or more: one is the face left whole.
-            if (end - o > 1 || !whole_apart) piece_count_ += end - o;
+            // One output face with the input face's corners is the face left whole (a face
+            // with points holds a new vertex in every piece; two edges snapped onto its corner
+            // point leave it one piece).
+            const bool whole = end == o + 1 && output.mesh.triangles[o] == input.triangles[f];
+            if (!whole || !whole_apart) piece_count_ += end - o;
             extra += end - o - 1;
         }
         first_piece_.push_back(piece_count_);
