@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <numbers>
 #include <numeric>
 #include <random>
 #include <utility>
@@ -149,6 +150,56 @@ TEST(Guard, SplitsTwoEdgesAtTheCornerPointWhereOneIsNotEnough) {
     EXPECT_EQ(d.inconsistent_edges, 0u);
     EXPECT_EQ(d.degenerate_faces, 0u);
     EXPECT_EQ(d.nonmanifold_vertices, 0u);
+}
+
+/// A near-surface vertex moved onto a sharp edge, as surface nets leave one in the cell the
+/// edge crosses: c (0) on the edge along x, with no feature normal, its vertex normal leaning
+/// 65 degrees from the top z = 0 towards the side y = 0 (it has more faces there); b (1) on the
+/// top, a (2) and d (3) on the side. Face 0 (b, c, a) has the crossing edge a-b, whose point
+/// `point` splits it into a piece on the side (c, a, point) and one on the top
+/// (c, point, b).
+struct VertexOnTheEdge {
+    test::Strip s;
+    SharpPoints points;
+
+    explicit VertexOnTheEdge(const Vec3& point) {
+        const Vec3 top(0, 0, 1), side(0, -1, 0);
+        s.mesh.positions = {{0, 0, 0}, {0.5, 0.3, 0}, {0.7, 0, -0.3}, {-0.5, 0, -0.3}};
+        s.mesh.triangles = {{1, 0, 2}, {0, 3, 2}};
+        s.rebuild();
+        s.set_feature_normals({Vec3::Zero(), top, side, side});
+        const double lean = 65.0 * std::numbers::pi / 180.0;
+        s.normals.vertex[0] = Vec3(0, -std::sin(lean), std::cos(lean));
+        points.points = {point};
+        points.slots = PointSlots(s.mesh.face_count());
+        points.slots.set_edge_point(crossing_edge(), 0);
+        points.edge_points = 1;
+    }
+    Index crossing_edge() const { return 2; }  ///< face 0's half-edge a -> b
+};
+
+// The piece on the top faces 65 degrees from c's vertex normal, more than the 60 its reference
+// allows, but it lies on the side next to c that b's feature normal gives: the point is taken
+// (before, the guard refused it and left a notch in the restored edge).
+TEST(Guard, AcceptsAPieceOnASideNextToAVertexMovedOntoTheEdge) {
+    const VertexOnTheEdge e(Vec3(0.6, 0, 0));
+    ASSERT_EQ(tail_vertex(e.s.mesh, e.crossing_edge()), 2u);
+    ASSERT_EQ(head_vertex(e.s.mesh, e.crossing_edge()), 1u);
+    const GuardedPoints g = guard(e.s, e.points);
+    EXPECT_TRUE(g.accepted == e.points.slots);
+    EXPECT_EQ(g.report.refused_by_quality + g.report.refused_by_guard, 0u);
+}
+
+// The same vertex still refuses a piece that lies on no side: with the point moved off the edge
+// to (0.6, 0.45, 0) the top piece turns over (it faces -z); at (0.6, 0, 0.15) it leans 26
+// degrees from the top, more than a side's normal may be off, and faces 88 from c's normal.
+TEST(Guard, RefusesAPieceOnNoSideNextToAVertexWithoutAFeatureNormal) {
+    for (const Vec3& point : {Vec3(0.6, 0.45, 0), Vec3(0.6, 0, 0.15)}) {
+        const VertexOnTheEdge e(point);
+        const GuardedPoints g = guard(e.s, e.points);
+        EXPECT_FALSE(g.accepted.has_points(0)) << point.transpose();
+        EXPECT_EQ(g.report.refused_by_quality, 1u) << point.transpose();
+    }
 }
 
 TEST(Guard, WithdrawnPointsAreNotAccepted) {

@@ -20,6 +20,14 @@ namespace {
 /// grid mesh, far above rounding noise.
 constexpr double kCollapsedAreaRatio = 1e-12;
 
+/// The margin (degrees) of a vertex's reference normal where it has no feature normal, and the
+/// most any feature normal's is taken to be.
+constexpr double kNoFeatureNormalMarginDeg = 30.0;
+
+/// A piece within this angle (degrees) of a side's feature normal lies on that side: as far as
+/// a fitted feature normal may be from eq. 5.1's and still be trusted, its error on curved sides.
+const double kOnASideDeg = FeatureNormalOptions{}.max_fit_correction_deg;
+
 double sin_deg(double degrees) { return std::sin(degrees * std::numbers::pi / 180.0); }
 
 /// The normal a piece at an input vertex must agree with, and how far (degrees) that normal
@@ -44,8 +52,8 @@ struct ReferenceNormals {
     const std::vector<Vec3>& vertex;
     /// v's reference for a piece of a face whose longest edge is `extent` long.
     Reference at(Index v, double extent) const {
-        if (feature.normal(v).isZero(0.0)) return {vertex[v], 30.0};
-        return {feature.normal(v), std::min(margin_deg(v, extent), 30.0)};
+        if (feature.normal(v).isZero(0.0)) return {vertex[v], kNoFeatureNormalMarginDeg};
+        return {feature.normal(v), std::min(margin_deg(v, extent), kNoFeatureNormalMarginDeg)};
     }
     const Vec3& normal(Index v) const {
         return feature.normal(v).isZero(0.0) ? vertex[v] : feature.normal(v);
@@ -112,7 +120,9 @@ private:
             const Reference r = reference_.at(v, std::sqrt(extent_squared));
             if (r.normal.isZero(0.0)) continue;
             const double min_cosine = sin_deg(r.margin_deg);
-            if (n.dot(r.normal) <= min_cosine * n.norm()) return Fault::Quality;
+            if (n.dot(r.normal) <= min_cosine * n.norm() && !lies_on_a_side_next_to(v, n)) {
+                return Fault::Quality;
+            }
             if (thin && n.dot(r.normal) <= sin_deg(std::min(2.0 * r.margin_deg, 89.0)) * n.norm()) {
                 found = Fault::Guard;
             }
@@ -121,6 +131,27 @@ private:
         }
         if (!face_leans_past_surface && n.dot(face_normal) <= 0.0) return Fault::Guard;
         return found;
+    }
+
+    /// Whether piece normal n lies on a side next to v, v having no feature normal of its own:
+    /// within kOnASideDeg of the feature normal of a vertex of v's ring. Such a vertex has all
+    /// its faces in bands (a near-surface vertex moved onto the junction of the sides, the
+    /// middle row of a wide band); on the sharp edge the surface faces as either side does, but
+    /// its vertex normal leans to the side with more of its faces, and a piece lying on the
+    /// other side can face away from it by more than the 60 degrees the reference allows (65 on
+    /// a turned block meshed by surface nets, where that left a notch in the restored edge).
+    /// A piece that lies on no side is still judged by the vertex normal alone: taking any side
+    /// within 60 degrees let pieces across mech's and impeller's narrow features turn against
+    /// the exact surface. Bound: the vertex's ring.
+    bool lies_on_a_side_next_to(Index v, const Vec3& n) const {
+        if (!reference_.feature.normal(v).isZero(0.0)) return false;
+        const double min_cosine = std::cos(kOnASideDeg * std::numbers::pi / 180.0) * n.norm();
+        bool on_a_side = false;
+        for_each_ring_vertex(input_.mesh, input_.connectivity, v, [&](Index u) {
+            const Vec3& side = reference_.feature.normal(u);
+            on_a_side = on_a_side || (!side.isZero(0.0) && n.dot(side) > min_cosine);
+        });
+        return on_a_side;
     }
 
     bool spans_thin_material(Index a, Index b, Index c) const {
