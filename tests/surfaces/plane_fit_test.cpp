@@ -59,6 +59,42 @@ TEST(HeightQuadric, FindsACylinderWhereThePlaneMissesIt) {
     }
 }
 
+// The fitted surface as an implicit function: zero on the cylinder to its fourth-order terms,
+// over its gradient's length a distance to first order off it, its gradient along the cylinder's
+// normal and the derivative of its value; and where it meets the plane y = 2 (surfaces/junction.h),
+// the point of the true curve x, 2, sqrt(r^2 - 4) - r.
+TEST(HeightQuadric, IsASurfaceThatMeetsOthersOnTheirTrueJunction) {
+    const double r = 10.0;
+    const std::vector<Vec3> points = cylinder_patch(r, 3.0, 0.5);
+    const std::optional<PlaneFit> plane = fit_plane(points, Vec3::UnitZ());
+    ASSERT_TRUE(plane);
+    const std::optional<HeightFit> fit = fit_height_quadric(points, plane->plane, Vec3(0.3, 1, 0));
+    ASSERT_TRUE(fit);
+    for (const double y : {-2.0, 0.5, 2.5}) {
+        const Vec3 on(0.7, y, std::sqrt(r * r - y * y) - r);
+        const Vec3 normal = Vec3(0, on.y(), on.z() + r).normalized();
+        EXPECT_NEAR(fit->evaluate(on).value, 0.0, 2e-3) << y;
+        const SurfaceValue at = fit->evaluate(on);
+        EXPECT_NEAR((fit->evaluate(on + 0.01 * normal).value - at.value) / at.gradient.norm(), 0.01,
+                    1e-4)
+            << y;
+        EXPECT_GT(fit->evaluate(on).gradient.normalized().dot(normal), 0.9999) << y;
+        const double step = 1e-6;
+        for (int a = 0; a < 3; ++a) {
+            const Vec3 d = step * Vec3::Unit(a);
+            const double slope = (fit->evaluate(on + d).value - fit->evaluate(on - d).value) / 2;
+            EXPECT_NEAR(slope / step, fit->evaluate(on).gradient[a], 1e-6) << y << " " << a;
+        }
+    }
+    struct Wall {
+        SurfaceValue evaluate(const Vec3& p) const { return {p.y() - 2.0, Vec3::UnitY()}; }
+    };
+    const std::optional<Vec3> meet =
+        edge_junction(*fit, Wall{}, Vec3(0.5, 2.2, 0.3), Vec3(0.5, 2.2, 0.3), {.pitch = 0.5});
+    ASSERT_TRUE(meet);
+    EXPECT_TRUE(meet->isApprox(Vec3(0.5, 2.0, std::sqrt(r * r - 4.0) - r), 1e-3));
+}
+
 TEST(HeightQuadric, TooFewOrCollinearPointsGiveNone) {
     const Plane plane{Vec3::UnitZ(), 0.0};
     std::vector<Vec3> few = cylinder_patch(10.0, 0.5, 0.5);  // 9 points

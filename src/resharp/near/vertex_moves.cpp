@@ -51,6 +51,16 @@ constexpr double kMinSag = 0.03;
 /// plane may meet the edge's line and still be taken for crossing it, in pitches (within_edge()).
 constexpr double kEdgeEndMargin = 0.01;
 constexpr double kEdgeOvershoot = 0.25;
+/// Near: the most (root mean square, in pitches) a curved side's vertices may scatter about the
+/// second-order surface fitted to them for a vertex between patches to move onto its junction
+/// with the other sides (point_on_curved_junction()). Cell means of crossings on a curved face
+/// lie inside it by about its sag over a cell, h / 8r pitches (0.02 at r = 6 h), and over the
+/// fit rings the surface's own terms beyond the second add as much again.
+constexpr double kCurvedJunctionScatter = 0.03;
+/// ... and the surface must fit them this many times as closely as their plane: a bent face
+/// explains its vertices' scatter about the plane, a flat face that took in a few vertices off
+/// it (a hole's rim) does not, and its surface, bent towards them, meets the others off the edge.
+constexpr double kBendShare = 3.0;
 
 /// One side of a vertex: a patch and the plane fitted to its vertices around the vertex.
 struct Side {
@@ -184,7 +194,8 @@ private:
     /// the point of their junction nearest v's current place within v's input cell, or, where
     /// the junction misses the cell, the cell's point nearest it. None unless each patch has a
     /// plane its vertices scatter about by at most the junction scatter and each two planes part by
-    /// more than the junction angle. Dual meshers place a vertex of the cell a sharp edge crosses
+    /// more than the junction angle; where a patch is curved, their surfaces' junction instead
+    /// (point_on_curved_junction()). Dual meshers place a vertex of the cell a sharp edge crosses
     /// between the faces, off both; the edge itself is where it belongs (dual contouring's vertex).
     std::optional<Vec3> point_on_junction(Index v, Scratch& scratch) const {
         std::array<Index, kMaxSides> patches{};
@@ -197,9 +208,11 @@ private:
             fit_missing_farther(v, around, 0, fits, scratch);
         std::array<PlaneFit, 3> planes;
         for (std::size_t i = 0; i < count; ++i) {
-            if (!fits[i]) return std::nullopt;
+            if (!fits[i]) return point_on_curved_junction(v, around, scratch);
             planes[i] = *fits[i];
         }
+        if (!flat_enough(std::span(planes.data(), count)))
+            return point_on_curved_junction(v, around, scratch);
         const std::optional<Junction> junction = sharp_junction(std::span(planes.data(), count));
         if (!junction) return std::nullopt;
         const Vec3 y = nearest_to_cell(
@@ -303,23 +316,88 @@ private:
         Eigen::PartialPivLU<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>> gram_;
     };
 
+    /// Whether each plane's points scatter about it by at most the junction scatter.
+    bool flat_enough(std::span<const PlaneFit> fits) const {
+        return std::all_of(fits.begin(), fits.end(), [&](const PlaneFit& fit) {
+            return fit.rms_distance <= options_.max_junction_scatter * rule_.grid.pitch;
+        });
+    }
+
+    /// Whether every two of the unit normals part by more than the junction angle.
+    bool part_sharply(std::span<const Vec3> normals) const {
+        const double max_cosine = std::cos(options_.junction_angle_deg * std::numbers::pi / 180.0);
+        for (std::size_t i = 0; i < normals.size(); ++i) {
+            for (std::size_t j = i + 1; j < normals.size(); ++j) {
+                if (normals[i].dot(normals[j]) >= max_cosine) return false;
+            }
+        }
+        return true;
+    }
+
     /// The junction of two or three fitted planes where it is a sharp edge or corner: none
     /// unless each plane's points scatter about it by at most the junction scatter and each two
     /// planes part by more than the junction angle.
     std::optional<Junction> sharp_junction(std::span<const PlaneFit> fits) const {
+        if (!flat_enough(fits)) return std::nullopt;
         std::array<Plane, 3> planes;
+        std::array<Vec3, 3> normals;
         for (std::size_t i = 0; i < fits.size(); ++i) {
-            if (fits[i].rms_distance > options_.max_junction_scatter * rule_.grid.pitch)
-                return std::nullopt;
             planes[i] = fits[i].plane;
+            normals[i] = planes[i].normal;
         }
-        const double max_cosine = std::cos(options_.junction_angle_deg * std::numbers::pi / 180.0);
-        for (std::size_t i = 0; i < fits.size(); ++i) {
-            for (std::size_t j = i + 1; j < fits.size(); ++j) {
-                if (planes[i].normal.dot(planes[j].normal) >= max_cosine) return std::nullopt;
-            }
-        }
+        if (!part_sharply(std::span(normals.data(), fits.size()))) return std::nullopt;
         return Junction::of(std::span(planes.data(), fits.size()));
+    }
+
+    /// One side's surface near a vertex: its plane, or the second-order surface fitted over it
+    /// where its vertices lie on a curve of it.
+    struct SideSurface {
+        Plane plane;
+        std::optional<HeightFit> bent;
+        SurfaceValue evaluate(const Vec3& p) const {
+            return bent ? bent->evaluate(p) : SurfaceValue{plane.signed_distance(p), plane.normal};
+        }
+    };
+
+    /// Near, a vertex between two or three patches one of which is curved (its vertices scatter
+    /// about any plane by their sag: a cylinder of 20 pitches' radius by 0.02 pitch over the fit
+    /// rings, one of 6 by more than the trusted 0.1): where the surfaces fitted to each side's
+    /// vertices off the bands meet, second-order where a plane leaves them (fit_height_quadric()
+    /// over the plane, as point_on_curved() takes), nearest the vertex and clamped to its input
+    /// cell. None unless each surface fits its vertices within kCurvedJunctionScatter and the
+    /// surfaces part there by more than the junction angle. The sides' points are those within
+    /// the fit rings, where a side has enough of them (the surface's own higher-order terms grow
+    /// with the reach), else all those gathered.
+    std::optional<Vec3> point_on_curved_junction(Index v, std::span<const Index> patches,
+                                                 Scratch& scratch) const {
+        const double h = rule_.grid.pitch;
+        const Vec3& x = current_.mesh.positions[v];
+        std::array<SideSurface, 3> surfaces;
+        for (std::size_t i = 0; i < patches.size(); ++i) {
+            Vec3 facing = collect_side_points(patches[i], scratch, scratch.fit_reached);
+            if (scratch.points.size() < static_cast<std::size_t>(options_.min_fit_points))
+                facing = collect_side_points(patches[i], scratch);
+            if (scratch.points.size() < static_cast<std::size_t>(options_.min_fit_points))
+                return std::nullopt;
+            const std::optional<PlaneFit> plane = fit_plane(scratch.points, facing);
+            if (!plane) return std::nullopt;
+            surfaces[i].plane = plane->plane;
+            if (plane->rms_distance <= options_.max_junction_scatter * h) continue;
+            surfaces[i].bent = fit_height_quadric(scratch.points, plane->plane, x);
+            if (!surfaces[i].bent || surfaces[i].bent->rms_distance > kCurvedJunctionScatter * h ||
+                !(surfaces[i].bent->rms_distance * kBendShare < plane->rms_distance))
+                return std::nullopt;
+        }
+        const JunctionSolverOptions solver{.pitch = h};
+        const std::optional<Vec3> y =
+            patches.size() == 2 ? edge_junction(surfaces[0], surfaces[1], x, x, solver)
+                                : corner_junction(surfaces[0], surfaces[1], surfaces[2], x, solver);
+        if (!y) return std::nullopt;
+        std::array<Vec3, 3> normals;
+        for (std::size_t i = 0; i < patches.size(); ++i)
+            normals[i] = surfaces[i].evaluate(*y).gradient.normalized();
+        if (!part_sharply(std::span(normals.data(), patches.size()))) return std::nullopt;
+        return cell_of(input_[v]).clamp(*y);
     }
 
     /// The sides of v's patches: its own first; for a band vertex the others around it too, and

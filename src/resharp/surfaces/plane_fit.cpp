@@ -75,7 +75,21 @@ std::optional<HeightFit> fit_height_quadric(std::span<const Vec3> points, const 
         residual += r * r;
     }
     return HeightFit{foot + coefficients[0] * plane.normal,
-                     std::sqrt(residual / static_cast<double>(points.size()))};
+                     std::sqrt(residual / static_cast<double>(points.size())),
+                     foot,
+                     frame,
+                     scale,
+                     coefficients};
+}
+
+SurfaceValue HeightFit::evaluate(const Vec3& p) const {
+    const Vec3 local = frame.transpose() * (p - foot);
+    const double u = local.x() / scale, v = local.y() / scale;
+    const Eigen::Vector<double, 6>& c = coefficients;
+    const double height = c[0] + c[1] * u + c[2] * v + c[3] * u * u + c[4] * u * v + c[5] * v * v;
+    const double slope_u = (c[1] + 2.0 * c[3] * u + c[4] * v) / scale;
+    const double slope_v = (c[2] + c[4] * u + 2.0 * c[5] * v) / scale;
+    return {local.z() - height, frame * Vec3(-slope_u, -slope_v, 1.0)};
 }
 
 }  // namespace resharp

@@ -8,6 +8,7 @@
 #include <span>
 
 #include "resharp/core/types.h"
+#include "resharp/surfaces/junction.h"
 
 namespace resharp {
 
@@ -39,6 +40,15 @@ std::optional<PlaneFit> fit_plane(std::span<const Vec3> points, const Vec3& faci
 struct HeightFit {
     Vec3 point = Vec3::Zero();  ///< on the fitted surface, over at's foot on the plane
     double rms_distance = 0.0;  ///< root mean square of the points' height residuals
+    Vec3 foot = Vec3::Zero();   ///< at's foot on the plane: the frame's origin
+    Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();  ///< tangent_frame() of the normal
+    double scale = 1.0;  ///< u and v are lengths along the frame's axes over this
+    Eigen::Vector<double, 6> coefficients = Eigen::Vector<double, 6>::Zero();  ///< c0 ... c5
+
+    /// The height above the plane less the fitted height at p's foot, with its gradient: zero
+    /// on the surface, positive on the plane normal's side, and over the gradient's length a
+    /// distance to first order near it (surfaces/junction.h meets it with other surfaces).
+    SurfaceValue evaluate(const Vec3& p) const;
 };
 
 /// None with fewer than 10 points or where they do not fix the six coefficients (all near one
