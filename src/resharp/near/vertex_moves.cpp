@@ -365,12 +365,12 @@ private:
     /// vertices off the bands meet, second-order where a plane leaves them (fit_height_quadric()
     /// over the plane, as point_on_curved() takes), nearest the vertex and clamped to its input
     /// cell. None unless each surface fits its vertices within kCurvedJunctionScatter, one side
-    /// at most is curved, and the surfaces part there by more than the junction angle. Where two
-    /// curved sides meet (impeller's blades and hub, frogface's ball-end passes) their surfaces
-    /// met off the edge: surface nets' Edge F-score on impeller fell 0.741 -> 0.727 with them,
-    /// and rose to 0.769 without. The sides' points are those within
-    /// the fit rings, where a side has enough of them (the surface's own higher-order terms grow
-    /// with the reach), else all those gathered.
+    /// at most is curved, and the surfaces part there by more than the junction angle. One
+    /// curved side: where two meet, both fits' errors add, and no part measured gains from them
+    /// (with two allowed the Edge F-scores of docs/results.md's surface-nets and OpenVDB rows
+    /// agreed with these within 0.002). The sides' points are those within the fit rings, where
+    /// a side has enough of them (the surface's own higher-order terms grow with the reach), else
+    /// all those gathered.
     std::optional<Vec3> point_on_curved_junction(Index v, std::span<const Index> patches,
                                                  Scratch& scratch) const {
         const double h = rule_.grid.pitch;
