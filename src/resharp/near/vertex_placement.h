@@ -48,7 +48,9 @@ struct PlacementEstimate {
 /// alone:
 /// - grid lines show as coordinate values that many vertices share; the pitch is their common
 ///   spacing (a least-squares fit over all of them, so float32 rounding averages out) and the
-///   origin a line value;
+///   origin a line value. It is first taken from the median gap between the values most
+///   vertices share, and only where that gives no grid whose edges hold exactly placed vertices
+///   searched for over a range of pitches (which costs most of the estimate);
 /// - Midpoint: nearly every vertex has two coordinates on grid lines and the third at the middle
 ///   of its cell edge; on grid edges elsewhere (exact crossings, bisection): Exact;
 /// - Near: few vertices on grid edges, but nearly every triangle spans three of the four cells
