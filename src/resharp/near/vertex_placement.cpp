@@ -459,6 +459,21 @@ std::optional<FirstWindow> first_window(const AxisValues& values, const SharedWo
     return w;
 }
 
+/// One reading of the sample's coordinates at a tolerance: the values shared within it and the
+/// first window of the lattice search over them, read by the quick test of an exact mesh and by
+/// the search alike.
+struct Reading {
+    double tol = 0.0;
+    AxisValues values;
+    std::optional<FirstWindow> first;
+};
+
+Reading read_at(double tol, const SharedWork& work) {
+    Reading r{tol, shared_values(work.sorted, tol), std::nullopt};
+    r.first = first_window(r.values, work);
+    return r;
+}
+
 LatticeSeeds lattice_seeds(const std::optional<FirstWindow>& w, SharedWork& work) {
     if (!w) return {};
     return {w->centre, w->reach, coarse_lattices(w->values, work.scan)};
@@ -858,10 +873,10 @@ std::vector<double> median_gaps(const AxisValues& values) {
 /// placed exactly: a grid-edge mesh is what that share says, and a grid found this way
 /// classifies as the scan's would (both are made coarsest by coarsest_edge_grid()); Midpoint
 /// and the rest are left to the scan, whose grid their moves use. Nothing otherwise.
-std::optional<PlacementEstimate> exact_on_gap_lattice(const Mesh& mesh, double tol,
-                                                      const SharedWork& work) {
-    const AxisValues values = shared_values(work.sorted, tol);
-    const std::optional<FirstWindow> first = first_window(values, work);
+std::optional<PlacementEstimate> exact_on_gap_lattice(const Mesh& mesh, const Reading& reading) {
+    const double tol = reading.tol;
+    const AxisValues& values = reading.values;
+    const std::optional<FirstWindow>& first = reading.first;
     if (!first) return std::nullopt;
     const AxisValues lines = heavy_values(first->values);
     for (double gap : median_gaps(lines)) {  // Bound: three gaps
@@ -884,13 +899,15 @@ std::optional<PlacementEstimate> exact_on_gap_lattice(const Mesh& mesh, double t
 /// dual to as well.
 enum class Search { EdgeGridOnly, Any };
 
-/// The estimate from the mesh alone, coordinates compared within `tol`. With
+/// The estimate from the mesh alone, coordinates compared within the reading's tolerance. With
 /// Search::EdgeGridOnly, where no grid's edges hold the vertices it says so and stops there
 /// (an on-edge share of 0).
-PlacementEstimate estimate_within(const Mesh& mesh, double tol, Search search, SharedWork& work) {
+PlacementEstimate estimate_within(const Mesh& mesh, const Reading& reading, Search search,
+                                  SharedWork& work) {
     PlacementEstimate e;
-    const AxisValues values = shared_values(work.sorted, tol);
-    const LatticeSeeds seeds = lattice_seeds(first_window(values, work), work);
+    const double tol = reading.tol;
+    const AxisValues& values = reading.values;
+    const LatticeSeeds seeds = lattice_seeds(reading.first, work);
     // A grid-edge mesh takes the first grid whose edges hold its vertices. Only then may a mesh
     // be dual: a grid-edge mesh is dual to its grid shifted by half a cell on every axis (its
     // triangles span the eighths of a cell), so the dual test alone cannot tell them apart. A
@@ -1008,24 +1025,26 @@ PlacementEstimate estimate_vertex_placement(const Mesh& full, const std::optiona
     // lies on grid edges, else the rounded reading.
     const auto [exact_tol, float_tol] = coordinate_tolerances(mesh);
     std::optional<SharedWork> work;
-    if (!given) work = shared_work(mesh);
-    const auto estimate = [&](double tol, Search search) {
-        return given ? classify_on(mesh, *given, tol, "the given grid")
-                     : estimate_within(mesh, tol, search, *work);
-    };
-    // A mesh with every vertex on a grid's edges at either tolerance, and placed exactly,
-    // needs no search (exact_on_gap_lattice()).
+    std::vector<Reading> readings;  // at exact_tol, then at float_tol if there is one
     if (!given) {
-        for (const std::optional<double> tol : {std::optional(exact_tol), float_tol}) {
-            if (!tol) continue;
-            if (auto e = exact_on_gap_lattice(mesh, *tol, *work)) return *e;
+        work = shared_work(mesh);
+        readings.push_back(read_at(exact_tol, *work));
+        if (float_tol) readings.push_back(read_at(*float_tol, *work));
+        // A mesh with every vertex on a grid's edges at either tolerance, and placed exactly,
+        // needs no search (exact_on_gap_lattice()).
+        for (const Reading& r : readings) {
+            if (auto e = exact_on_gap_lattice(mesh, r)) return *e;
         }
     }
+    const auto estimate = [&](std::size_t reading, double tol, Search search) {
+        return given ? classify_on(mesh, *given, tol, "the given grid")
+                     : estimate_within(mesh, readings[reading], search, *work);
+    };
     // The first reading stands only where a grid's edges hold the vertices (a share of
     // kOnEdgeShare or more, which no dual grid reaches: estimate_within() tests every grid for
     // that first); with a rounded reading to follow, it need not look for a dual grid.
-    PlacementEstimate e = estimate(exact_tol, float_tol ? Search::EdgeGridOnly : Search::Any);
-    if (float_tol && e.on_grid_edge_share < kOnEdgeShare) e = estimate(*float_tol, Search::Any);
+    PlacementEstimate e = estimate(0, exact_tol, float_tol ? Search::EdgeGridOnly : Search::Any);
+    if (float_tol && e.on_grid_edge_share < kOnEdgeShare) e = estimate(1, *float_tol, Search::Any);
     return e;
 }
 
