@@ -578,13 +578,17 @@ private:
     /// all lie on them, rounding alone parts the two fits). A flat face's midpoints scatter in
     /// stairs no quadratic follows.
     bool is_bent(std::span<const Vec3> points, const PlaneFit& fit) const {
+        const double h = rule_.grid.pitch;
+        const double least_sag = kMinSag * kMinSag * h * h;
+        const double square = fit.rms_distance * fit.rms_distance;
+        // The surface takes out at most the whole mean square: a plane this close needs no
+        // surface fitted to say so (most fits of a midpoint mesh of an axis-aligned part, whose
+        // faces' midpoints lie on their planes; the same verdicts to the bit).
+        if (!(square > least_sag)) return false;
         const std::optional<HeightFit> bent = fit_height_quadric(points, fit.plane, fit.centroid);
         if (!bent) return false;
-        const double sag = fit.rms_distance * fit.rms_distance -
-                           bent->rms_distance * bent->rms_distance;  // mean square taken out
-        const double h = rule_.grid.pitch;
-        return sag > kSagShare * fit.rms_distance * fit.rms_distance &&
-               sag > kMinSag * kMinSag * h * h;
+        const double sag = square - bent->rms_distance * bent->rms_distance;  // taken out
+        return sag > kSagShare * fit.rms_distance * fit.rms_distance && sag > least_sag;
     }
 
     /// Into scratch.points the gathered vertices of `patch` (near: off the bands, whose
