@@ -91,16 +91,58 @@ struct Scratch {
     std::size_t fit_reached = 0;
 };
 
+/// The vertices that share a face with each vertex, each once, in the order
+/// for_each_ring_vertex() first meets them. Midpoint moves gather three rings around every
+/// vertex, three times over (515 k gatherings on mech by midpoints): there the neighbours are
+/// listed first (CSR), and a ring walk visits the six or so of a vertex rather than the dozen
+/// corners of its faces, reaching the same vertices in the same order (the fits sum their points
+/// in it). Near moves gather around band vertices only, where listing every vertex's neighbours
+/// costs more than it saves: they walk the faces.
+class Neighbours {
+public:
+    /// Bound (listed): the corners of every face around every vertex, once.
+    Neighbours(const Mesh& mesh, const Connectivity& connectivity, bool listed)
+        : mesh_(mesh), connectivity_(connectivity) {
+        if (!listed) return;
+        first_.assign(mesh.vertex_count() + 1, 0);
+        vertex_.reserve(connectivity.ring_faces.size());
+        std::vector<Index> listed_for(mesh.vertex_count(), kNoIndex);
+        for (Index v = 0; v < mesh.vertex_count(); ++v) {
+            for_each_ring_vertex(mesh, connectivity, v, [&](Index j) {
+                if (listed_for[j] == v) return;
+                listed_for[j] = v;
+                vertex_.push_back(j);
+            });
+            first_[v + 1] = static_cast<Index>(vertex_.size());
+        }
+    }
+
+    std::size_t vertex_count() const { return mesh_.vertex_count(); }
+
+    /// Calls visit(j) for the neighbours j of v, each at least once, first meetings in order.
+    template <class Visit>
+    void for_each(Index v, Visit&& visit) const {
+        if (first_.empty()) return for_each_ring_vertex(mesh_, connectivity_, v, visit);
+        for (Index k = first_[v]; k < first_[v + 1]; ++k) visit(vertex_[k]);
+    }
+
+private:
+    const Mesh& mesh_;
+    const Connectivity& connectivity_;
+    std::vector<Index> first_;   ///< listed: #V + 1, v's neighbours are vertex_[first_[v], ...)
+    std::vector<Index> vertex_;  ///< listed: about 6 per vertex
+};
+
 /// Collects into scratch.reached v and the vertices within `rings` rings of it, ring by ring,
 /// at most `cap`. Where scratch.reached holds fewer rings of v, all of each, and fewer vertices
 /// than `cap`, it goes on from there: a vertex whose planes have too few points within the fit
 /// rings is gathered again farther out, and the rings it has are the first ones it would
-/// gather. Bound: rings * cap ring walks.
-void gather_rings(const Mesh& mesh, const Connectivity& connectivity, Index v, int rings,
-                  std::size_t cap, Scratch& scratch) {
+/// gather. Bound: rings * cap neighbour lists.
+void gather_rings(const Neighbours& neighbours, Index v, int rings, std::size_t cap,
+                  Scratch& scratch) {
     std::vector<Index>& reached = scratch.reached;
-    if (scratch.reached_from.size() != mesh.vertex_count())
-        scratch.reached_from.assign(mesh.vertex_count(), kNoIndex);
+    if (scratch.reached_from.size() != neighbours.vertex_count())
+        scratch.reached_from.assign(neighbours.vertex_count(), kNoIndex);
     const bool goes_on =
         scratch.rings > 0 && reached[0] == v && scratch.rings <= rings && reached.size() < cap;
     if (!goes_on) {
@@ -113,7 +155,7 @@ void gather_rings(const Mesh& mesh, const Connectivity& connectivity, Index v, i
     for (; scratch.rings < rings && reached.size() < cap; ++scratch.rings) {
         const std::size_t ring_end = reached.size();
         for (std::size_t i = scratch.last_ring_begin; i < ring_end; ++i) {
-            for_each_ring_vertex(mesh, connectivity, reached[i], [&](Index j) {
+            neighbours.for_each(reached[i], [&](Index j) {
                 if (reached.size() < cap && scratch.reached_from[j] != v) {
                     scratch.reached_from[j] = v;
                     reached.push_back(j);
@@ -139,6 +181,8 @@ public:
           max_scatter_(rule.grid.pitch * (rule.placement == VertexPlacement::Midpoint
                                               ? options.max_scatter_midpoint
                                               : options.max_scatter_near)),
+          neighbours_(current.mesh, current.connectivity,
+                      rule.placement == VertexPlacement::Midpoint),
           in_band_(current.mesh.vertex_count(), 0) {
         if (rule.scope != FitScope::Patches) return;
         for (Index f = 0; f < current.mesh.face_count(); ++f) {
@@ -173,8 +217,7 @@ private:
 
     /// The vertices within the fit rings of v into scratch.reached.
     void gather_fit_rings(Index v, Scratch& scratch) const {
-        gather_rings(current_.mesh, current_.connectivity, v, options_.fit_rings, kMaxGathered,
-                     scratch);
+        gather_rings(neighbours_, v, options_.fit_rings, kMaxGathered, scratch);
         scratch.fit_reached = scratch.reached.size();
     }
 
@@ -445,8 +488,7 @@ private:
     /// fit rings a side across it often has too few vertices off the band.
     void fit_missing_farther(Index v, std::span<const Index> patches, std::size_t first, Fits& fits,
                              Scratch& scratch) const {
-        gather_rings(current_.mesh, current_.connectivity, v, options_.other_side_fit_rings,
-                     kMaxOtherSideGathered, scratch);
+        gather_rings(neighbours_, v, options_.other_side_fit_rings, kMaxOtherSideGathered, scratch);
         for (std::size_t i = first; i < patches.size(); ++i) {
             if (!fits[i]) fits[i] = fit_side(patches[i], scratch);
         }
@@ -784,6 +826,7 @@ private:
     MoveRule rule_;
     VertexMoveOptions options_;
     double max_scatter_;
+    Neighbours neighbours_;
     std::vector<std::uint8_t> in_band_;  ///< per vertex: a corner of an edge or corner triangle
     /// Midpoint, patch scope: per patch id, whole_patch_planes(); empty otherwise.
     std::vector<std::optional<PlaneFit>> patch_plane_;
