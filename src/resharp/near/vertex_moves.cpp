@@ -81,9 +81,10 @@ struct Target {
 struct Scratch {
     std::vector<Index> reached;  ///< the vertices within the rings, nearest rings first
     std::vector<Vec3> points;
-    /// Per vertex (#V): the vertex whose rings last reached it, kNoIndex where cleared. A
-    /// vertex's own index marks "reached"; a gathering clears only the marks of the last.
-    std::vector<Index> reached_from;
+    /// Per vertex (#V): the number of the gathering that last reached it (0: none). A new
+    /// gathering takes the next number, so no marks are cleared.
+    std::vector<std::uint32_t> reached_in;
+    std::uint32_t gathering = 0;  ///< the number of the current gathering
     int rings = 0;  ///< how many rings `reached` holds, all of each (0: none, or cut short)
     std::size_t last_ring_begin = 0;  ///< where the outermost of them begins in `reached`
     /// How many of `reached` lie within the fit rings: the vertex's own plane is fitted to
@@ -141,31 +142,42 @@ private:
 void gather_rings(const Neighbours& neighbours, Index v, int rings, std::size_t cap,
                   Scratch& scratch) {
     std::vector<Index>& reached = scratch.reached;
-    if (scratch.reached_from.size() != neighbours.vertex_count())
-        scratch.reached_from.assign(neighbours.vertex_count(), kNoIndex);
+    if (scratch.reached_in.size() != neighbours.vertex_count())
+        scratch.reached_in.assign(neighbours.vertex_count(), 0);
     const bool goes_on =
         scratch.rings > 0 && reached[0] == v && scratch.rings <= rings && reached.size() < cap;
     if (!goes_on) {
-        for (Index j : reached) scratch.reached_from[j] = kNoIndex;  // v may be gathered again
+        // Bound: the marks are cleared once in 2^32 - 1 gatherings, when the numbers run out.
+        if (++scratch.gathering == 0) {
+            std::fill(scratch.reached_in.begin(), scratch.reached_in.end(), 0);
+            scratch.gathering = 1;
+        }
         reached.assign(1, v);
-        scratch.reached_from[v] = v;
+        scratch.reached_in[v] = scratch.gathering;
         scratch.rings = 0;
         scratch.last_ring_begin = 0;
     }
-    for (; scratch.rings < rings && reached.size() < cap; ++scratch.rings) {
-        const std::size_t ring_end = reached.size();
+    // Plain pointers and a count: appending through the vector made every visit read its size
+    // and the marks' address again (a third of the midpoint moves' instructions).
+    std::uint32_t* const reached_in = scratch.reached_in.data();
+    const std::uint32_t gathering = scratch.gathering;
+    std::size_t count = reached.size();
+    reached.resize(std::max(cap, count));
+    Index* const out = reached.data();
+    for (; scratch.rings < rings && count < cap; ++scratch.rings) {
+        const std::size_t ring_end = count;
         for (std::size_t i = scratch.last_ring_begin; i < ring_end; ++i) {
-            neighbours.for_each(reached[i], [&](Index j) {
-                if (reached.size() < cap && scratch.reached_from[j] != v) {
-                    scratch.reached_from[j] = v;
-                    reached.push_back(j);
-                }
+            neighbours.for_each(out[i], [&](Index j) {
+                if (reached_in[j] == gathering || count == cap) return;
+                reached_in[j] = gathering;
+                out[count++] = j;
             });
         }
         scratch.last_ring_begin = ring_end;
     }
+    reached.resize(count);
     // Rings cut short by the cap are not whole: the next gathering starts anew.
-    if (reached.size() >= cap) scratch.rings = 0, scratch.last_ring_begin = 0;
+    if (count >= cap) scratch.rings = 0, scratch.last_ring_begin = 0;
 }
 
 class MovePlanner {
