@@ -124,7 +124,9 @@ public:
     template <class Visit>
     void for_each(Index v, Visit&& visit) const {
         if (first_.empty()) return for_each_ring_vertex(mesh_, connectivity_, v, visit);
-        for (Index k = first_[v]; k < first_[v + 1]; ++k) visit(vertex_[k]);
+        // The ends read once: visit's stores may, for all the compiler knows, change them.
+        const Index* const end = vertex_.data() + first_[v + 1];
+        for (const Index* j = vertex_.data() + first_[v]; j != end; ++j) visit(*j);
     }
 
 private:
