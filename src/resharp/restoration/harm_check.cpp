@@ -107,16 +107,31 @@ struct FaceVerdict {
     bool is_harmful() const { return turned + folded + crossing > 0; }
 };
 
-/// One thread's scratch: which input vertices and faces the current gather reached (cleared
-/// by the next one, through the lists), the faces within two rings and their boxes.
+/// One thread's scratch: which input vertices and faces the current gather reached, the faces
+/// within two rings and their boxes.
 struct Scratch {
-    std::vector<std::uint8_t> vertex_mark, face_mark;
+    /// Per input vertex and face: the number of the gathering that last reached it (0: none). A
+    /// new gathering takes the next number, so no marks are cleared; and unlike byte marks,
+    /// storing one does not make the compiler read the lists' ends again (a byte may alias them).
+    std::vector<std::uint32_t> vertex_seen, face_seen;
+    std::uint32_t gathering = 0;
     std::vector<Index> vertices, faces;
     std::vector<Box3> boxes;
     /// per face and piece of the split face judged: the piece turns against the face
     Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic> against;
     Scratch(std::size_t vertex_count, std::size_t face_count)
-        : vertex_mark(vertex_count, 0), face_mark(face_count, 0) {}
+        : vertex_seen(vertex_count, 0), face_seen(face_count, 0) {}
+
+    /// The number of a new gathering. Bound: the marks are cleared once in 2^32 - 1 gatherings,
+    /// when the numbers run out.
+    std::uint32_t next_gathering() {
+        if (++gathering == 0) {
+            std::fill(vertex_seen.begin(), vertex_seen.end(), 0);
+            std::fill(face_seen.begin(), face_seen.end(), 0);
+            gathering = 1;
+        }
+        return gathering;
+    }
 };
 
 /// Whether triangle t has a corner `moved` flags (an input vertex; empty flags: none moved).
@@ -458,24 +473,25 @@ private:
     /// vertices of the faces around f's vertices. Gathering those vertices first visits each
     /// of the ~12 ring vertices' faces once, not each first-ring face's three rings.
     void gather_two_rings(Index f, Scratch& scratch) const {
-        for (Index u : scratch.vertices) scratch.vertex_mark[u] = 0;
-        for (Index g : scratch.faces) scratch.face_mark[g] = 0;
+        const std::uint32_t gathering = scratch.next_gathering();
+        std::uint32_t* const vertex_seen = scratch.vertex_seen.data();
+        std::uint32_t* const face_seen = scratch.face_seen.data();
         scratch.vertices.clear();
         scratch.faces.clear();
         scratch.boxes.clear();
         for (Index v : input_.mesh.triangles[f]) {
             for (Index g : input_.connectivity.faces_around(v)) {
                 for (Index u : input_.mesh.triangles[g]) {
-                    if (scratch.vertex_mark[u]) continue;
-                    scratch.vertex_mark[u] = 1;
+                    if (vertex_seen[u] == gathering) continue;
+                    vertex_seen[u] = gathering;
                     scratch.vertices.push_back(u);
                 }
             }
         }
         for (Index u : scratch.vertices) {
             for (Index g : input_.connectivity.faces_around(u)) {
-                if (scratch.face_mark[g]) continue;
-                scratch.face_mark[g] = 1;
+                if (face_seen[g] == gathering) continue;
+                face_seen[g] = gathering;
                 scratch.faces.push_back(g);
             }
         }
@@ -662,8 +678,8 @@ private:
         };
         const Index f = split_.face(i);
         std::optional<Across> found = search(f);
-        for (Index k = 0; k < 3 && !found; ++k) {
-            const Index twin = input_.connectivity.twin[3 * f + k];
+        for (Index edge = 0; edge < 3 && !found; ++edge) {
+            const Index twin = input_.connectivity.twin[3 * f + edge];
             if (twin != kNoIndex) found = search(face_of(twin));
         }
         return found;
@@ -709,15 +725,17 @@ private:
             }
             if (g < f && judged_[j]) continue;  // (tested)
             if (!split_box_[j].may_meet(box)) continue;
-            // The exact box of j's pieces decides, as their shapes give it.
+            // The exact box of j's pieces decides; their shapes are made only past it (on a
+            // midpoint mesh, whose every face is judged, an array of six made for every
+            // candidate cost more than the tests).
             const Index their_count = split_.piece_count(j);
-            std::array<std::optional<Shape>, 6> theirs;
             Box3 their_box;
-            for (Index k = 0; k < their_count; ++k)
-                their_box.extend(theirs[k].emplace(piece_shape(j, k)).box);
+            for (Index k = 0; k < their_count; ++k) {
+                for (Index v : piece_triangle(j, k)) their_box.extend(output_.mesh.positions[v]);
+            }
             if (!their_box.intersects(box)) continue;
             bool met = false;
-            for (Index k = 0; k < their_count; ++k) met |= test_against(*theirs[k]);
+            for (Index k = 0; k < their_count; ++k) met |= test_against(piece_shape(j, k));
             if (met) mark_harmful(j);
         }
         return static_cast<std::uint32_t>(std::count(meets.begin(), meets.begin() + count, true));
