@@ -213,11 +213,10 @@ public:
         if (!patch_plane_.empty() && vertex_patch_[v] == kNoIndex)
             return {point_between_planes(v, scratch), std::nullopt, false};
         if (rule_.scope == FitScope::Patches && !may_move(v)) return {};
-        gather_fit_rings(v, scratch);
         std::array<Side, kMaxSides> sides;
         const std::size_t count = rule_.scope == FitScope::Patches
                                       ? patch_sides(v, scratch, sides)
-                                      : neighbourhood_side(scratch, sides);
+                                      : neighbourhood_side(v, scratch, sides);
         if (count == 0) return {};
         const std::span<const Side> around(sides.data(), count);
         return {point_on_own_side(v, around, scratch), point_on_sides_junction(v, around), false};
@@ -258,10 +257,9 @@ private:
         std::array<Index, kMaxSides> patches{};
         const std::size_t count = add_ring_patches(v, patches, 0);
         if (count < 2 || count > 3) return std::nullopt;
-        gather_fit_rings(v, scratch);
         const std::span<const Index> around(patches.data(), count);
         Fits fits;
-        if (fit_sides(around, fits, scratch) < count)
+        if (fit_sides(v, around, fits, scratch) < count)
             fit_missing_farther(v, around, 0, fits, scratch);
         std::array<PlaneFit, 3> planes;
         for (std::size_t i = 0; i < count; ++i) {
@@ -472,7 +470,7 @@ private:
         std::array<Index, kMaxSides> patches{};
         const std::span<const Index> around(patches.data(), patches_at(v, patches));
         Fits fits;
-        const std::size_t fitted = fit_sides(around, fits, scratch);
+        const std::size_t fitted = fit_sides(v, around, fits, scratch);
         if (!fits[0]) return 0;
         if (in_band_[v] && fitted < 2 && rule_.placement == VertexPlacement::Near)
             fit_missing_farther(v, around, 1, fits, scratch);
@@ -486,11 +484,19 @@ private:
 
     using Fits = std::array<std::optional<PlaneFit>, kMaxSides>;
 
-    /// The planes of `patches` fitted to their vertices gathered last (fits[i] for patches[i]);
-    /// gives how many have one.
-    std::size_t fit_sides(std::span<const Index> patches, Fits& fits, Scratch& scratch) const {
+    /// The planes of `patches` around v (fits[i] for patches[i]): each fitted to its vertices
+    /// within the fit rings of v, gathered when a patch first needs them, or a midpoint patch's
+    /// whole plane (then none are gathered: on mech by midpoints most vertices' patches have
+    /// one). Gives how many have a plane.
+    std::size_t fit_sides(Index v, std::span<const Index> patches, Fits& fits,
+                          Scratch& scratch) const {
         std::size_t fitted = 0;
+        bool gathered = false;
         for (std::size_t i = 0; i < patches.size(); ++i) {
+            if (!gathered && !has_whole_plane(patches[i])) {
+                gather_fit_rings(v, scratch);
+                gathered = true;
+            }
             fits[i] = fit_side(patches[i], scratch);
             fitted += fits[i].has_value();
         }
@@ -508,8 +514,11 @@ private:
         }
     }
 
-    /// One side: the plane of every gathered vertex, where they scatter about it as one face.
-    std::size_t neighbourhood_side(Scratch& scratch, std::array<Side, kMaxSides>& sides) const {
+    /// One side: the plane of every vertex within the fit rings of v, where they scatter about
+    /// it as one face.
+    std::size_t neighbourhood_side(Index v, Scratch& scratch,
+                                   std::array<Side, kMaxSides>& sides) const {
+        gather_fit_rings(v, scratch);
         scratch.points.clear();
         Vec3 facing = Vec3::Zero();
         for (Index j : scratch.reached) {
@@ -554,9 +563,14 @@ private:
     /// which lie on their surface; band vertices are what is to be corrected.
     /// Midpoint: the plane of the whole patch where it has one (whole_patch_planes()).
     std::optional<PlaneFit> fit_side(Index patch, Scratch& scratch) const {
-        if (!patch_plane_.empty() && patch_plane_[patch]) return patch_plane_[patch];
+        if (has_whole_plane(patch)) return patch_plane_[patch];
         const Vec3 facing = collect_side_points(patch, scratch);
         return trusted_fit(scratch.points, facing);
+    }
+
+    /// Midpoint: whether `patch` has a plane as a whole (whole_patch_planes()).
+    bool has_whole_plane(Index patch) const {
+        return !patch_plane_.empty() && patch_plane_[patch].has_value();
     }
 
     /// Midpoint: per patch, the plane of all its vertices off the bands at their input places,
