@@ -94,11 +94,11 @@ struct Scratch {
 
 /// The vertices that share a face with each vertex, each once, in the order
 /// for_each_ring_vertex() first meets them. Midpoint moves gather three rings around every
-/// vertex, three times over (515 k gatherings on mech by midpoints): there the neighbours are
-/// listed first (CSR), and a ring walk visits the six or so of a vertex rather than the dozen
-/// corners of its faces, reaching the same vertices in the same order (the fits sum their points
-/// in it). Near moves gather around band vertices only, where listing every vertex's neighbours
-/// costs more than it saves: they walk the faces.
+/// vertex, and in the two passes after around every vertex whose patch has no plane as a
+/// whole: there the neighbours are listed first (CSR), and a ring walk visits the six or so of
+/// a vertex rather than the dozen corners of its faces, reaching the same vertices in the same
+/// order (the fits sum their points in it). Near moves gather around band vertices only, where
+/// listing every vertex's neighbours costs more than it saves: they walk the faces.
 class Neighbours {
 public:
     /// Bound (listed): the corners of every face around every vertex, once.
@@ -160,7 +160,7 @@ void gather_rings(const Neighbours& neighbours, Index v, int rings, std::size_t 
         scratch.last_ring_begin = 0;
     }
     // Plain pointers and a count: appending through the vector made every visit read its size
-    // and the marks' address again (a third of the midpoint moves' instructions).
+    // and the marks' address again (then a third of the midpoint moves' instructions).
     std::uint32_t* const reached_in = scratch.reached_in.data();
     const std::uint32_t gathering = scratch.gathering;
     std::size_t count = reached.size();

@@ -108,10 +108,10 @@ struct FaceVerdict {
 };
 
 /// One thread's scratch: which input vertices and faces the current gather reached (cleared
-/// by the next one, through the lists), the faces within two rings and their boxes. Byte
-/// marks: numbered gatherings in four bytes, which need no clearing, took 2.5 % fewer of the
-/// check's instructions on a midpoint mesh and raised the peak memory of a restoration, which
-/// the check sets, by 2 to 6 %.
+/// by the next one, through the lists), the faces within two rings and their boxes. The marks
+/// are bytes: numbered gatherings in four bytes need no clearing and took 2.5 % fewer of the
+/// check's instructions on a midpoint mesh, but raised the peak memory of a restoration,
+/// which this check sets, by 2 to 6 %.
 struct Scratch {
     std::vector<std::uint8_t> vertex_mark, face_mark;
     std::vector<Index> vertices, faces;
