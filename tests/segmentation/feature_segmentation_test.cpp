@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -10,6 +11,9 @@
 #include "resharp/core/errors.h"
 #include "resharp/mesh/geometry.h"
 #include "resharp/segmentation/edge_segmentation.h"
+#include "resharp/sim/marching_cubes.h"
+#include "resharp/sim/solids.h"
+#include "resharp/sim/tridexel.h"
 #include "support/grid_shapes.h"
 
 namespace resharp {
@@ -125,6 +129,73 @@ TEST(FeatureSegmentation, KeepsTheSidesOfAFadingCreaseApart) {
     const FeatureSegmentation paper =
         segment(mesh, {.curved_region_faces = 0, .keep_sharp_borders_apart = false});
     EXPECT_EQ(paper.vertex_patch[left], paper.vertex_patch[right]);
+}
+
+/// A block [0.37, 10.21] x [0.29, 8.13] x [0.41, 6.2929] (faces 0..5 as in sampled_box()) with
+/// a 45-degree chamfer along its top front edge: -y + z <= 3.4 (face 6), meeting the top at
+/// y = 2.8929, on a grid of pitch 0.5 with nodes at multiples of it. There the last chamfer
+/// vertices (y = 2.6 on the grid line z = 6) and the first top vertices (z = 6.2929 on the grid
+/// line y = 3) make a row of faces leaning 36 degrees from the top and 9 from the chamfer, which
+/// grows into the chamfer's patch; the top vertices of that row, 0.21 pitch beyond the edge, lie
+/// on the top (chamfered_block at 100 cells has such rows along its four chamfers).
+test::SampledShape leaning_chamfer_block() {
+    test::SampledShape shape;
+    std::vector<sim::HalfSpace> faces;
+    const Eigen::AlignedBox3d box(Vec3(0.37, 0.29, 0.41), Vec3(10.21, 8.13, 6.2929));
+    for (int a = 0; a < 3; ++a) {
+        faces.push_back({-Vec3::Unit(a), -box.min()[a], 2 * a});
+        faces.push_back({Vec3::Unit(a), box.max()[a], 2 * a + 1});
+    }
+    faces.push_back({Vec3(0.0, -1.0, 1.0).normalized(), 3.4 / std::sqrt(2.0), 6});
+    for (const sim::HalfSpace& face : faces) shape.surfaces[face.surface] = {};
+    const sim::ConvexPolytope solid(faces);
+    sim::OracleMesh meshed =
+        sim::mesh_dexels(sim::sample_solid(sim::grid_enclosing(solid.bounds(), 0.5), solid));
+    shape.mesh = std::move(meshed.mesh);
+    shape.surface_ids = std::move(meshed.surface_ids);
+    return shape;
+}
+
+TEST(FeatureSegmentation, LabelsAVertexOfARowThatGrewIntoTheOtherPatchByItsOwnSurface) {
+    const test::SampledShape shape = leaning_chamfer_block();
+    const Mesh& mesh = shape.mesh;
+    // The row is there: faces with corners on the chamfer and on the top, leaning 9 degrees from
+    // the chamfer.
+    const Vec3 chamfer_normal = Vec3(0.0, -1.0, 1.0).normalized();
+    const auto normals = face_normals(mesh);
+    std::size_t leaning = 0;
+    for (Index f = 0; f < mesh.face_count(); ++f) {
+        std::set<int> surfaces;
+        for (Index v : mesh.triangles[f]) surfaces.insert(shape.surface_ids[v]);
+        leaning += surfaces == std::set<int>{5, 6} && normals[f].dot(chamfer_normal) > 0.98;
+    }
+    ASSERT_GT(leaning, 10u);
+    // Its top vertices (y = 3), away from the side faces, take the top's patch, which the vote
+    // gave to none of them: seen from any neighbour on either patch they lie at elevation 0.
+    const FeatureSegmentation s = segment(mesh);
+    std::map<Index, std::size_t> top_patches;  // patch -> top vertices
+    for (Index v = 0; v < mesh.vertex_count(); ++v) {
+        if (shape.surface_ids[v] == 5) ++top_patches[s.vertex_patch[v]];
+    }
+    const Index top = std::max_element(top_patches.begin(), top_patches.end(), [](auto a, auto b) {
+                          return a.second < b.second;
+                      })->first;
+    std::size_t row = 0;
+    for (Index v = 0; v < mesh.vertex_count(); ++v) {
+        const Vec3& x = mesh.positions[v];
+        if (shape.surface_ids[v] != 5 || std::abs(x.y() - 3.0) > 1e-9 || x.x() < 1.0 || x.x() > 9.5)
+            continue;
+        ++row;
+        EXPECT_EQ(s.vertex_patch[v], top) << "vertex " << v << " at x = " << x.x();
+    }
+    EXPECT_GE(row, 15u);
+    // The chamfer's vertices all share one patch, and it is not the top's.
+    std::set<Index> chamfer_patches;
+    for (Index v = 0; v < mesh.vertex_count(); ++v) {
+        if (shape.surface_ids[v] == 6) chamfer_patches.insert(s.vertex_patch[v]);
+    }
+    ASSERT_EQ(chamfer_patches.size(), 1u);
+    EXPECT_NE(*chamfer_patches.begin(), top);
 }
 
 }  // namespace

@@ -608,19 +608,29 @@ std::vector<Index> label_vertices(const Mesh& mesh, const Connectivity& c,
 }
 
 /// How far v rises out of the tangent plane of patch p at its neighbours labelled p: the
-/// smallest sine of the elevation of v seen from such a neighbour; infinity if none can tell.
-double elevation_from_patch(const Mesh& mesh, const Connectivity& c,
-                            const std::vector<Vec3>& normals, const std::vector<Index>& face_patch,
-                            const std::vector<Index>& label, Index v, Index p) {
-    double best = std::numeric_limits<double>::infinity();
+/// smallest sine of the elevation of v seen from such a neighbour (`any`), and from such a
+/// neighbour inside p (`inside`: its faces all in p, `single`); infinity where none can tell.
+struct Elevation {
+    double any = std::numeric_limits<double>::infinity();
+    double inside = std::numeric_limits<double>::infinity();
+};
+
+Elevation elevation_from_patch(const Mesh& mesh, const Connectivity& c,
+                               const std::vector<Vec3>& normals,
+                               const std::vector<Index>& face_patch,
+                               const std::vector<Index>& label, const std::vector<Index>& single,
+                               Index v, Index p) {
+    Elevation elevation;
     for_each_ring_vertex(mesh, c, v, [&](Index q) {
         if (label[q] != p) return;
         const Vec3 n = patch_mean_normal(mesh, c, normals, face_patch, q, p, v);
         const Vec3 d = mesh.positions[v] - mesh.positions[q];
         if (n.isZero(0.0) || d.isZero(0.0)) return;
-        best = std::min(best, std::abs(n.dot(d)) / d.norm());
+        const double e = std::abs(n.dot(d)) / d.norm();
+        elevation.any = std::min(elevation.any, e);
+        if (single[q] == p) elevation.inside = std::min(elevation.inside, e);
     });
-    return best;
+    return elevation;
 }
 
 /// Below this sine of elevation a vertex lies on a patch's tangent planes: 0.2 is about 11.5
@@ -630,8 +640,21 @@ constexpr double kOnPlaneSine = 0.2;
 
 /// Sines of elevation this close are equal: a vertex on two patches' planes at once is at 0 from
 /// both, and rounding, which the part's scale and position change, must not choose between
-/// them. Ties keep the vote, then the candidate of lower id.
+/// them. Ties go to the view from inside the patches, then to the vote (beats()).
 constexpr double kElevationTie = 1e-9;
+
+bool elevations_tie(double a, double b) { return a == b || std::abs(a - b) <= kElevationTie; }
+
+/// Whether patch elevation e beats `best` (the least so far): lower as seen from any neighbour;
+/// where those tie, lower as seen from inside the patches; where those tie too, the vote's
+/// (`voted`: e is the patch the vote gave). A row of band faces that grew into a patch holds
+/// vertices beyond the true edge, labelled with it and seeing each other in the row's plane, at
+/// elevation 0 as from the surface they lie on: seen from inside the patch they rise off it.
+bool beats(const Elevation& e, const Elevation& best, bool voted) {
+    if (!elevations_tie(e.any, best.any)) return e.any < best.any;
+    if (!elevations_tie(e.inside, best.inside)) return e.inside < best.inside;
+    return voted;
+}
 
 /// The patches a vertex could lie on: those of its faces, or, for a vertex whose faces all lie
 /// in bands, those of its labelled neighbours. A vertex with faces of a single patch (and band
@@ -669,19 +692,19 @@ std::vector<Index> refine_border_labels(const Mesh& mesh, const Connectivity& c,
             if (single[v] != kMixedRing && single[v] != kNoIndex) return;  // inside one patch
             candidate_patches(mesh, c, face_patch, label, v, candidates);
             if (candidates.size() < 2 && label[v] != kNoIndex) return;  // nothing to decide
-            double best = std::numeric_limits<double>::infinity();
+            Elevation best;
             Index best_patch = label[v];
             for (Index p : candidates) {
-                const double e = elevation_from_patch(mesh, c, normals, face_patch, label, v, p);
-                const bool tie = e == best || std::abs(e - best) <= kElevationTie;
-                if (e < best - kElevationTie || (tie && p == label[v])) {
+                const Elevation e =
+                    elevation_from_patch(mesh, c, normals, face_patch, label, single, v, p);
+                if (beats(e, best, p == label[v])) {
                     best = e;
                     best_patch = p;
                 }
             }
             const bool decided = label[v] != kNoIndex
-                                     ? best < std::numeric_limits<double>::infinity()
-                                     : best < kOnPlaneSine;
+                                     ? best.any < std::numeric_limits<double>::infinity()
+                                     : best.any < kOnPlaneSine;
             if (decided) refined[v] = best_patch;
         });
     return refined;
