@@ -590,12 +590,14 @@ private:
         // on their whole planes it segments as an exact mesh does, and its patches reach the
         // edges (stepped_block turned, 100 cells: Edge F-score 0.10 -> 0.50).
         rule.scope = FitScope::Patches;
+        RestoreOptions stairless = options_;
+        stairless.features.inside_view_breaks_ties = false;
         for (int round = 0; round < kMidpointPatchRounds; ++round) {
             const Mesh current = moved_mesh(surface.mesh, moves);
             // The last round's detection goes before this one's allocates: the moves planned
             // from it are all that is read of it (peak memory: a third detection alive).
             smoothed.reset();
-            smoothed = detect_bands(current, input.connectivity, options_);
+            smoothed = detect_bands(current, input.connectivity, stairless);
             add_times(smoothed->stage_time);
             clock.run(Stage::VertexMoves, [&] {
                 moves = plan_vertex_moves(smoothed->surface(current), from,

@@ -650,9 +650,10 @@ bool elevations_tie(double a, double b) { return a == b || std::abs(a - b) <= kE
 /// (`voted`: e is the patch the vote gave). A row of band faces that grew into a patch holds
 /// vertices beyond the true edge, labelled with it and seeing each other in the row's plane, at
 /// elevation 0 as from the surface they lie on: seen from inside the patch they rise off it.
-bool beats(const Elevation& e, const Elevation& best, bool voted) {
+/// `inside_first`: FeatureSegmentationOptions::inside_view_breaks_ties.
+bool beats(const Elevation& e, const Elevation& best, bool voted, bool inside_first) {
     if (!elevations_tie(e.any, best.any)) return e.any < best.any;
-    if (!elevations_tie(e.inside, best.inside)) return e.inside < best.inside;
+    if (inside_first && !elevations_tie(e.inside, best.inside)) return e.inside < best.inside;
     return voted;
 }
 
@@ -683,7 +684,7 @@ std::vector<Index> refine_border_labels(const Mesh& mesh, const Connectivity& c,
                                         const std::vector<Vec3>& normals,
                                         const std::vector<Index>& face_patch,
                                         const std::vector<Index>& single,
-                                        const std::vector<Index>& label) {
+                                        const std::vector<Index>& label, bool inside_first) {
     std::vector<Index> refined = label;
     // Each vertex reads the labels of the vote and writes only its own refined label.
     for_each_index_with<std::vector<Index>>(
@@ -697,7 +698,7 @@ std::vector<Index> refine_border_labels(const Mesh& mesh, const Connectivity& c,
             for (Index p : candidates) {
                 const Elevation e =
                     elevation_from_patch(mesh, c, normals, face_patch, label, single, v, p);
-                if (beats(e, best, p == label[v])) {
+                if (beats(e, best, p == label[v], inside_first)) {
                     best = e;
                     best_patch = p;
                 }
@@ -785,7 +786,8 @@ FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& conne
     s.face_patch = std::move(region);
     s.vertex_patch = refine_border_labels(
         mesh, connectivity, face_normals, s.face_patch, single,
-        label_vertices(mesh, connectivity, s.face_patch, single, s.patch_count));
+        label_vertices(mesh, connectivity, s.face_patch, single, s.patch_count),
+        options.inside_view_breaks_ties);
     return s;
 }
 

@@ -38,6 +38,12 @@ struct FeatureSegmentationOptions {
     /// of smooth borders, when a patch of one meets a patch of the other at a border of merge
     /// angle or more. False: the paper's plain greedy merging.
     bool keep_sharp_borders_apart = true;
+    /// Vertex labels (our addition): where a border vertex lies as near two patches' tangent
+    /// planes seen from its neighbours on them, those seen from neighbours inside each patch
+    /// decide before the vote (docs/method.md). False: the vote decides such ties. Midpoint
+    /// restoration's segmentations of its stairless meshes, whose vertices sit on fitted planes,
+    /// take false (restore(): a tilted wedge's moved vertices twice as far off their faces).
+    bool inside_view_breaks_ties = true;
 };
 
 struct FeatureSegmentation {
