@@ -9,7 +9,7 @@
 #include "resharp/mesh/mesh.h"
 
 namespace resharp {
-struct FeatureNormals;
+class FeatureNormals;
 }
 
 namespace resharp {
