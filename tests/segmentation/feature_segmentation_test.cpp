@@ -147,7 +147,6 @@ test::SampledShape leaning_chamfer_block() {
         faces.push_back({Vec3::Unit(a), box.max()[a], 2 * a + 1});
     }
     faces.push_back({Vec3(0.0, -1.0, 1.0).normalized(), 3.4 / std::sqrt(2.0), 6});
-    for (const sim::HalfSpace& face : faces) shape.surfaces[face.surface] = {};
     const sim::ConvexPolytope solid(faces);
     sim::OracleMesh meshed =
         sim::mesh_dexels(sim::sample_solid(sim::grid_enclosing(solid.bounds(), 0.5), solid));

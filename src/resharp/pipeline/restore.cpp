@@ -590,6 +590,8 @@ private:
         // on their whole planes it segments as an exact mesh does, and its patches reach the
         // edges (stepped_block turned, 100 cells: Edge F-score 0.10 -> 0.50).
         rule.scope = FitScope::Patches;
+        // Their vertices sit on fitted planes: elevation ties there are left to the vote
+        // (FeatureSegmentationOptions::inside_view_breaks_ties).
         RestoreOptions stairless = options_;
         stairless.features.inside_view_breaks_ties = false;
         for (int round = 0; round < kMidpointPatchRounds; ++round) {
