@@ -658,6 +658,7 @@ private:
         const std::optional<HeightFit> bent = fit_height_quadric(points, fit.plane, fit.centroid);
         if (!bent) return false;
         const double sag = square - bent->rms_distance * bent->rms_distance;  // taken out
+        // (kSagShare * rms) * rms, not kSagShare * square: rounded as before, the same verdicts.
         return sag > kSagShare * fit.rms_distance * fit.rms_distance && sag > least_sag;
     }
 
