@@ -61,40 +61,6 @@ TEST(Guard, RefusesAPieceTurnedAgainstTheFaceItReplaces) {
     EXPECT_FALSE(g.accepted.has_points(0));
 }
 
-/// A corner triangle (face 0: vertices 0, 1, 2) and the faces across its edges 0, 1, 2 (faces
-/// 1, 2, 3, whose third vertices are 3, 4, 5), with exact feature normals, as cut from mech.stl
-/// (one grid pitch a unit): every edge whose ends' normals differ crosses. Its points are placed
-/// by eq. 5.2-5.3, and on the crossing edges of the mesh's border, which eq. 5.2 leaves alone,
-/// by `border_points` (half-edge and point, as on mech.stl): the sharp edges go on there.
-struct CornerWithNeighbours {
-    test::Strip s;
-    SharpPoints points;
-
-    CornerWithNeighbours(const std::array<Vec3, 6>& positions, const std::array<Vec3, 6>& normals,
-                         const std::vector<std::pair<Index, Vec3>>& border_points) {
-        s.mesh.positions.assign(positions.begin(), positions.end());
-        s.mesh.triangles = {{0, 1, 2}, {1, 0, 3}, {2, 1, 4}, {0, 2, 5}};
-        s.rebuild();
-        s.set_feature_normals({normals.begin(), normals.end()});
-        BandClassification bands;
-        bands.face_role = {BandRole::Corner, BandRole::Edge, BandRole::Edge, BandRole::Edge};
-        for (Index h = 0; h < 3 * s.mesh.face_count(); ++h) {
-            const Index u = tail_vertex(s.mesh, h), v = head_vertex(s.mesh, h);
-            bands.is_crossing.push_back(normals[u] != normals[v]);
-        }
-        points =
-            place_sharp_points(s.mesh, s.connectivity, s.normals.face, bands, s.feature_normals);
-        for (const auto& [h, x] : border_points) {
-            EXPECT_TRUE(bands.is_crossing[h] && s.connectivity.twin[h] == kNoIndex);
-            points.slots.set_edge_point(h, static_cast<Index>(points.points.size()));
-            points.points.push_back(x);
-        }
-    }
-    Index corner() const { return points.slots.corner_point(0); }
-    Index edge(Index k) const { return points.slots.edge_point(k); }  ///< face 0's edge k
-    Index twin(Index k) const { return s.connectivity.twin[k]; }
-};
-
 // Where a sharp edge ends at a corner, eq. 5.2's mid-plane can put the edge's point past the
 // corner point, on the edge's extension: here the vertical edge runs up from the corner
 // (-0.414, 0, 0.586) to its next point at z = 1, and the point of edge 1 lies below the corner,
@@ -104,7 +70,7 @@ struct CornerWithNeighbours {
 // that restores nothing of its edge.
 TEST(Guard, SplitsAnEdgeAtTheCornerPointRatherThanDropIt) {
     const Vec3 up(0, 0, 1), front(0, -1, 0), left(-1, 0, 0);
-    const CornerWithNeighbours c(
+    const test::CornerWithNeighbours c(
         {Vec3(-1, 0.414, 0.586), Vec3(0, 0, 0), Vec3(-0.414, 0.414, 1), Vec3(-1, 0, 0),
          Vec3(0, 0, 1), Vec3(-1, 1.414, 0.586)},
         {up, front, left, front, front, up},
@@ -129,7 +95,7 @@ TEST(Guard, SplitsAnEdgeAtTheCornerPointRatherThanDropIt) {
 // point by faces 2 and 3 alone.
 TEST(Guard, SplitsTwoEdgesAtTheCornerPointWhereOneIsNotEnough) {
     const Vec3 up(0, 0, 1), back(0, 1, 0), right(1, 0, 0);
-    const CornerWithNeighbours c(
+    const test::CornerWithNeighbours c(
         {Vec3(0, 0.414, -0.414), Vec3(0, 0, 0), Vec3(0.586, -0.586, -1), Vec3(-1, 0, 0),
          Vec3(0.586, -0.586, 0), Vec3(0.586, 0.414, -1)},
         {up, back, right, back, right, right},

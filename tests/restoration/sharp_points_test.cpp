@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "resharp/restoration/pieces.h"
 #include "strip.h"
 
 namespace resharp {
@@ -162,6 +163,49 @@ TEST(SharpPoints, APointOverAFaceAroundAnEndGoesInsideIt) {
     expected.set_corner_point(2, 0);
     EXPECT_TRUE(points.slots == expected);
     EXPECT_TRUE(points.points[0].isApprox(Vec3(0, 0, 0.75), 1e-15));
+}
+
+/// A corner triangle as cut from stepped_block turned off the grid axes (examples/cad, 100 cells,
+/// grid pitch 0.73 mm; coordinates less (41.8, 19.2, 39.5)), its neighbours and their exact
+/// feature normals: vertex 1 on side a, 0 and 3 on side b, 2, 4 and 5 on side c. Vertices 2
+/// and 5 lie 0.02 mm apart (a grid crossing next to a grid node), and vertex 0 lies past the
+/// junction of b and c: eq. 5.4 refuses the point of edge 2 (from 2 to 0), and no face holds it.
+test::CornerWithNeighbours corner_past_an_edge() {
+    const Vec3 a(-0.37957269087502171, 0.89879177246062258, 0.21931238473690393);
+    const Vec3 b(-0.9221475172774074, -0.34843169778597549, -0.16804555441039318);
+    const Vec3 c(-0.074622575143179576, -0.26602387437045039, 0.96107375863870903);
+    return test::CornerWithNeighbours(
+        {Vec3(0.10699092408572142, 0.038277367090959302, 0.086567705614690738),
+         Vec3(0.0076005163203376469, 0.038277367090959302, -0.38767160394704803),
+         Vec3(0.0076005163203376469, -0.6892269921684715, 0.084993370447818961),
+         Vec3(0.0076005163203376469, 0.30132065030662147, 0.086567705614690738),
+         Vec3(-0.7199038429390896, -0.6892269921684715, 0.028506292085808127),
+         Vec3(0.027876581750689411, -0.6892269921684715, 0.086567705614690738)},
+        {b, a, c, b, c, c}, {});
+}
+
+// The corner point lies past edge 2 of the corner triangle, which has no point of its own: the
+// fan around the corner point would fold over that edge (a piece turned against every normal
+// around it), and the guard would drop every point of the face. Edge 2 takes the corner point
+// too, and the face splits into the four pieces on its sides, each facing its corners' normals.
+TEST(SharpPoints, ACornerPointPastAnEdgeWithoutAPointSplitsThatEdge) {
+    const test::CornerWithNeighbours c = corner_past_an_edge();
+    ASSERT_NE(c.corner(), kNoIndex);
+    EXPECT_NE(c.edge(0), kNoIndex);
+    EXPECT_NE(c.edge(1), kNoIndex);
+    EXPECT_EQ(c.edge(2), c.corner());
+    EXPECT_EQ(c.points.slots.edge_point(c.twin(2)), c.corner());
+    std::size_t pieces = 0;
+    const PieceVertices ids(c.s.mesh, c.points.points);
+    for_each_piece(c.s.mesh, c.points.slots, ids, 0, [&](Index u, Index v, Index w) {
+        ++pieces;
+        const Vec3 n = (ids.position(v) - ids.position(u)).cross(ids.position(w) - ids.position(u));
+        for (Index corner : {u, v, w}) {
+            if (!ids.is_original(corner)) continue;
+            EXPECT_GT(n.dot(c.s.feature_normals.normal(corner)), 0.0);
+        }
+    });
+    EXPECT_EQ(pieces, 4u);
 }
 
 /// Two chamfer faces across the edge of a boss of radius 3 standing up to z = 0, moved by

@@ -1,7 +1,14 @@
 #pragma once
 // A strip of two chamfer triangles across a convex right-angle edge along z, the smallest band
 // the guard, the split and the harm check can be tested on: a0, a1 on the top face y = 0, b0, b1
-// on the side face x = 0; the crossing edge a1-b0 has its ideal point at (0, 0, 0.75).
+// on the side face x = 0; the crossing edge a1-b0 has its ideal point at (0, 0, 0.75). And a
+// corner triangle with the three faces across its edges, for the corner's points.
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <utility>
+#include <vector>
 
 #include "resharp/mesh/connectivity.h"
 #include "resharp/mesh/geometry.h"
@@ -72,5 +79,39 @@ inline SharpPoints points_on_edge_a1_b0(const Strip& s, const SharpPointOptions&
     return place_sharp_points(s.mesh, s.connectivity, s.normals.face, bands, s.feature_normals,
                               options);
 }
+
+/// A corner triangle (face 0: vertices 0, 1, 2) and the faces across its edges 0, 1, 2 (faces
+/// 1, 2, 3, whose third vertices are 3, 4, 5), with exact feature normals, as cut from mech.stl
+/// (one grid pitch a unit): every edge whose ends' normals differ crosses. Its points are placed
+/// by eq. 5.2-5.3, and on the crossing edges of the mesh's border, which eq. 5.2 leaves alone,
+/// by `border_points` (half-edge and point, as on mech.stl): the sharp edges go on there.
+struct CornerWithNeighbours {
+    Strip s;
+    SharpPoints points;
+
+    CornerWithNeighbours(const std::array<Vec3, 6>& positions, const std::array<Vec3, 6>& normals,
+                         const std::vector<std::pair<Index, Vec3>>& border_points) {
+        s.mesh.positions.assign(positions.begin(), positions.end());
+        s.mesh.triangles = {{0, 1, 2}, {1, 0, 3}, {2, 1, 4}, {0, 2, 5}};
+        s.rebuild();
+        s.set_feature_normals({normals.begin(), normals.end()});
+        BandClassification bands;
+        bands.face_role = {BandRole::Corner, BandRole::Edge, BandRole::Edge, BandRole::Edge};
+        for (Index h = 0; h < 3 * s.mesh.face_count(); ++h) {
+            const Index u = tail_vertex(s.mesh, h), v = head_vertex(s.mesh, h);
+            bands.is_crossing.push_back(normals[u] != normals[v]);
+        }
+        points =
+            place_sharp_points(s.mesh, s.connectivity, s.normals.face, bands, s.feature_normals);
+        for (const auto& [h, x] : border_points) {
+            EXPECT_TRUE(bands.is_crossing[h] && s.connectivity.twin[h] == kNoIndex);
+            points.slots.set_edge_point(h, static_cast<Index>(points.points.size()));
+            points.points.push_back(x);
+        }
+    }
+    Index corner() const { return points.slots.corner_point(0); }
+    Index edge(Index k) const { return points.slots.edge_point(k); }  ///< face 0's edge k
+    Index twin(Index k) const { return s.connectivity.twin[k]; }
+};
 
 }  // namespace resharp::test

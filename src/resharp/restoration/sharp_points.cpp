@@ -346,6 +346,36 @@ bool is_spike(const Connectivity& c, const std::vector<Vec3>& face_normals,
     return false;
 }
 
+/// True when p, projected along the normal of face f, lies beyond its edge k: on the far side of
+/// the edge's line from the face's third corner.
+bool lies_beyond_edge(const Mesh& mesh, Index f, Index k, const Vec3& p) {
+    const Triangle& t = mesh.triangles[f];
+    // Differences only, as face_holds().
+    const Vec3 a = mesh.positions[t[k]] - p, b = mesh.positions[t[(k + 1) % 3]] - p,
+               c = mesh.positions[t[(k + 2) % 3]] - p;
+    return a.cross(b).dot((b - a).cross(c - a)) < 0.0;
+}
+
+/// Puts corner point `id` of corner triangle f also on each crossing edge of f that has no point
+/// (eq. 5.4 refused it, no face holding it) and that the corner point lies beyond. Without it the
+/// fan around the corner point (Fig. 7b) folds over that edge and the guard drops every point
+/// of the face: on a mesh turned off the grid axes a corner point often lies just past an edge
+/// whose own point lay past its chord (a vertex of the edge almost on the junction). On the edge
+/// the fan's two pieces at it are empty (as for an edge the guard snaps onto the corner point)
+/// and the face across splits at the corner point instead.
+void put_on_edges_it_lies_beyond(const Mesh& mesh, const Connectivity& c,
+                                 const BandClassification& bands, Index f, Index id,
+                                 SharpPoints& out) {
+    const Vec3& corner = out.points[id];
+    for (Index k = 0; k < 3; ++k) {
+        const Index h = 3 * f + k;
+        if (!bands.is_crossing[h] || c.twin[h] == kNoIndex) continue;
+        if (out.slots.edge_point(h) != kNoIndex || !lies_beyond_edge(mesh, f, k, corner)) continue;
+        out.slots.set_edge_point(h, id);
+        out.slots.set_edge_point(c.twin[h], id);
+    }
+}
+
 void place_corner_points(const Mesh& mesh, const Connectivity& c,
                          const std::vector<Vec3>& face_normals, const BandClassification& bands,
                          const FeatureNormals& normals, const SideSurfaces& sides,
@@ -365,9 +395,11 @@ void place_corner_points(const Mesh& mesh, const Connectivity& c,
             ++out.refused_by_spike_test;
             continue;
         }
-        out.slots.set_corner_point(f, static_cast<Index>(out.points.size()));
+        const Index id = static_cast<Index>(out.points.size());
+        out.slots.set_corner_point(f, id);
         out.points.push_back(sides.corner_point(t, *m, out.first_order_fallbacks));
         ++out.corner_points;
+        put_on_edges_it_lies_beyond(mesh, c, bands, f, id, out);
     }
 }
 

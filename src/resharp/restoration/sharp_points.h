@@ -156,7 +156,9 @@ std::optional<Vec3> corner_point(const Vec3& a, const Vec3& n_a, const Vec3& b, 
                                  const Vec3& c, const Vec3& n_c);
 
 /// Takes the classification and the feature normals and their fields (#V) and gives the accepted
-/// points.
+/// points. A corner point also goes on each crossing edge of its corner triangle that has no
+/// point and that it lies beyond (docs/method.md, "Corner points beyond an edge without a
+/// point"), in both half-edges' slots, as the guard's snapping puts it.
 /// \throws InvalidInput if an option is out of range.
 SharpPoints place_sharp_points(const Mesh& mesh, const Connectivity& connectivity,
                                const std::vector<Vec3>& face_normals,
