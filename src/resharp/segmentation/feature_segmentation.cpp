@@ -35,15 +35,16 @@ void validate(const FeatureSegmentationOptions& o) {
     }
 }
 
-/// The half-edges of face f in geometric order: across the edge opposite its first corner in
-/// sweep order first. A face's index, the rotation of its corners and its orientation leave it.
-std::array<Index, 3> halfedges_in_sweep_order(const Mesh& mesh, Index f) {
+/// The sides of face f in geometric order: its half-edge across from its first corner in
+/// sweep order first (side k is half-edge 3f + k). A face's index, the rotation of its corners
+/// and its orientation leave it.
+std::array<int, 3> sides_in_sweep_order(const Mesh& mesh, Index f) {
     const std::array<Index, 3> corners = corners_in_sweep_order(mesh, f);
     const std::array<Index, 3>& t = mesh.triangles[f];
-    std::array<Index, 3> order{};
+    std::array<int, 3> order{};
     for (int k = 0; k < 3; ++k) {
         const int j = t[0] == corners[k] ? 0 : (t[1] == corners[k] ? 1 : 2);
-        order[k] = 3 * f + (j + 1) % 3;  // half-edge (j + 1) % 3 is opposite corner j
+        order[k] = (j + 1) % 3;  // half-edge (j + 1) % 3 is opposite corner j
     }
     return order;
 }
@@ -72,31 +73,38 @@ struct Growth {
     std::size_t curved_limit;
 };
 
-/// Breadth-first growth of region `id` from `seed` over the faces open(f) holds for, across
-/// manifold edges whose faces' normals differ by less than the angle; past `curved_limit` faces
-/// only into faces within the angle of the seed (0: no limit). Leaves the region's faces in
-/// `taken`, in the order taken. Until the limit each face's half-edges are crossed in geometric
-/// (sweep) order, so the region does not depend on how the mesh numbers its faces or corners.
+/// Breadth-first growth of region `id` from `seed` over the faces open(f) holds for, along
+/// `links` (growth_links(): manifold edges whose faces' normals differ by less than the angle);
+/// past `curved_limit` faces (more than 0) only into faces within the angle of the seed. Leaves
+/// the region's faces in `taken`, in the order taken. Until the limit a face's open sides are
+/// crossed in geometric (sweep) order, so the region does not depend on how the mesh numbers
+/// its faces or corners. The links, not the normals, are read until the limit: most of the
+/// growth's time was spent waiting for the normals of faces far apart in memory.
 template <class Open>
-void grow_from(const Growth& g, Index seed, Open&& open, Index id, std::vector<Index>& region,
-               std::vector<Index>& taken) {
+void grow_from(const Growth& g, const std::vector<std::uint8_t>& links, Index seed, Open&& open,
+               Index id, std::vector<Index>& region, std::vector<Index>& taken) {
     taken.assign(1, seed);
     region[seed] = id;
     // Bound: a face joins a region, and `taken`, once.
     for (std::size_t head = 0; head < taken.size(); ++head) {
         const Index u = taken[head];
+        std::array<Index, 3> across{kNoIndex, kNoIndex, kNoIndex};  // per side: an open face
+        int open_sides = 0;
+        for (int k = 0; k < 3; ++k) {
+            if (!(links[u] >> k & 1u)) continue;
+            const Index v = face_of(g.c.twin[3 * u + k]);
+            if (open(v)) across[k] = v, ++open_sides;
+        }
         // Past the limit the region is every face reachable under both tests from those taken
-        // so far, whatever the order: only the first curved_limit faces depend on it.
-        const bool in_order = taken.size() < g.curved_limit;
-        const std::array<Index, 3> halfedges =
-            in_order ? halfedges_in_sweep_order(g.mesh, u)
-                     : std::array<Index, 3>{3 * u, 3 * u + 1, 3 * u + 2};
-        for (Index h : halfedges) {
-            const Index twin = g.c.twin[h];
-            if (twin == kNoIndex) continue;
-            const Index v = face_of(twin);
-            if (!open(v) || g.normals[u].dot(g.normals[v]) <= g.min_cosine) continue;
-            const bool limited = g.curved_limit != 0 && taken.size() >= g.curved_limit;
+        // so far, whatever the order: only the first curved_limit faces depend on it. One open
+        // side has no order to keep.
+        const bool in_order = open_sides > 1 && taken.size() < g.curved_limit;
+        const std::array<int, 3> sides =
+            in_order ? sides_in_sweep_order(g.mesh, u) : std::array<int, 3>{0, 1, 2};
+        for (int k : sides) {
+            const Index v = across[k];
+            if (v == kNoIndex || !open(v)) continue;  // (two sides of a face may lead to one)
+            const bool limited = taken.size() >= g.curved_limit;
             if (limited && g.normals[seed].dot(g.normals[v]) <= g.min_cosine) continue;
             region[v] = id;
             taken.push_back(v);
@@ -106,28 +114,27 @@ void grow_from(const Growth& g, Index seed, Open&& open, Index id, std::vector<I
 
 /// Grows the faces of one component again as limited regions, seeded in sweep order: the first
 /// face not yet taken seeds the next region, as the face order of a mesher sweeping its grid
-/// slab by slab would. Numbers them in `region` from 0; returns how many there are. The faces
-/// of other components (`component_of` (#F) is not `number`) are never read in `region`:
-/// others may be growing there meanwhile.
-Index regrow_in_sweep_order(const Growth& g, std::span<const Index> component, Index number,
-                            const std::vector<Index>& component_of, std::vector<Index>& region) {
+/// slab by slab would. Numbers them in `region` from 0; returns how many there are. The links
+/// lead only to faces of the component: others may be growing in `region` meanwhile.
+Index regrow_in_sweep_order(const Growth& g, const std::vector<std::uint8_t>& links,
+                            std::span<const Index> component, std::vector<Index>& region) {
     constexpr Index kOpen = kNoIndex - 1;  // ids stay below #F
     for (Index f : component) region[f] = kOpen;
     FacesInSweepOrder seeds(g.mesh, component);
-    auto open = [&](Index f) { return component_of[f] == number && region[f] == kOpen; };
+    auto open = [&](Index f) { return region[f] == kOpen; };
     std::vector<Index> taken;
     Index next = 0;
     // Bound: every seed starts a region that takes at least itself, so at most |component|.
     for (Index seed = seeds.next(open); seed != kNoIndex; seed = seeds.next(open)) {
-        grow_from(g, seed, open, next++, region, taken);
+        grow_from(g, links, seed, open, next++, region, taken);
     }
     return next;
 }
 
-/// Per face, bit k set where growth without a limit crosses its half-edge k: a manifold edge
-/// whose faces' normals differ by less than the angle (grow_from()'s test; the dot product is
-/// the same bits either way round, so the links are symmetric). Taken in parallel: these tests
-/// are most of the first pass's work, and the pass then only follows links.
+/// Per face, bit k set where growth may cross its half-edge k: a manifold edge whose faces'
+/// normals differ by less than the angle (the dot product is the same bits either way round, so
+/// the links are symmetric, and those of a component lead only into it). Taken in parallel:
+/// these tests are most of the first pass's work, and both passes then follow links.
 std::vector<std::uint8_t> growth_links(const Growth& g) {
     std::vector<std::uint8_t> links(g.normals.size(), 0);
     for_each_index(links.size(), 4096, [&](std::size_t f) {
@@ -205,7 +212,7 @@ std::vector<Index> grow_regions(const Mesh& mesh, const Connectivity& c,
     std::vector<Index> local(normals.size(), 0);
     for_each_index(regrown.size(), 1, [&](std::size_t i) {
         Regrown& r = regrown[i];
-        r.regions = regrow_in_sweep_order(limited, r.faces, r.component, region, local);
+        r.regions = regrow_in_sweep_order(limited, links, r.faces, local);
     });
     std::vector<Index> first_id(components + 1, 1);  // per component, as prefix sums
     first_id[0] = 0;
