@@ -79,7 +79,8 @@ inline bool diagonal_02_is_better(const PieceVertices& ids, const FacePolygon& r
 /// Calls emit(a, b, c) for each piece of face f (ids as PieceVertices numbers them),
 /// counter-clockwise like the face; at most six pieces. With a corner point: a fan around it
 /// (Fig. 7b). Otherwise: an ear at each corner whose two edges were split (it lies on one
-/// feature, cut off by the new sharp edge), then the rest as one triangle or a quad split along
+/// feature, cut off by the new sharp edge; none where both hold one point), then the rest as one
+/// triangle or a quad split along
 /// the diagonal that gives the better-shaped worse triangle (ties: diagonal_02_is_better()),
 /// never along an original edge. A face without points is its own one piece.
 template <class Emit>
@@ -107,11 +108,15 @@ void for_each_piece(const Mesh& mesh, const PointSlots& slots, const PieceVertic
         const Index id = polygon.at(i);
         if (ids.is_original(id) && !ids.is_original(polygon.at(i - 1)) &&
             !ids.is_original(polygon.at(i + 1))) {
-            emit(polygon.at(i - 1), id, polygon.at(i + 1));
-        } else {
+            // Both edges of the corner on one point (the guard's merge): the ear is a segment,
+            // and the corner is cut off by the faces across those edges alone.
+            if (polygon.at(i - 1) != polygon.at(i + 1))
+                emit(polygon.at(i - 1), id, polygon.at(i + 1));
+        } else if (rest.size == 0 || id != rest.at(rest.size - 1)) {
             rest.push(id);
         }
     }
+    if (rest.size > 3 && rest.at(rest.size - 1) == rest.at(0)) --rest.size;  // (a merge)
     if (rest.size == 3) {
         emit(rest.at(0), rest.at(1), rest.at(2));
         return;
