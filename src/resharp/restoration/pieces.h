@@ -80,9 +80,9 @@ inline bool diagonal_02_is_better(const PieceVertices& ids, const FacePolygon& r
 /// counter-clockwise like the face; at most six pieces. With a corner point: a fan around it
 /// (Fig. 7b). Otherwise: an ear at each corner whose two edges were split (it lies on one
 /// feature, cut off by the new sharp edge; none where both hold one point), then the rest as one
-/// triangle or a quad split along
-/// the diagonal that gives the better-shaped worse triangle (ties: diagonal_02_is_better()),
-/// never along an original edge. A face without points is its own one piece.
+/// triangle or a quad split along the diagonal that gives the better-shaped worse triangle
+/// (ties: diagonal_02_is_better()), never along an original edge. A face without points is its
+/// own one piece.
 template <class Emit>
 void for_each_piece(const Mesh& mesh, const PointSlots& slots, const PieceVertices& ids, Index f,
                     Emit&& emit) {
