@@ -389,19 +389,18 @@ private:
             if (slot(f, i) != kNoIndex) edges[static_cast<std::size_t>(count++)] = i;
         }
         if (count != 2 || slot(f, edges[0]) == slot(f, edges[1])) return false;
+        // A point that came onto its edge by a merge or snap stays where it is, and takes no
+        // other: so a point goes only onto an edge of a face that holds it among the
+        // candidates, and is not carried along the band from face to face.
+        for (int i : {edges[0], edges[1]}) {
+            if (flags_.snapped[3 * f + static_cast<Index>(i)]) return false;
+        }
         const double reach = kMergeReach * std::sqrt(longest_edge_squared(input_.mesh, f));
         if ((point_at(f, edges[0]) - point_at(f, edges[1])).norm() > reach) return false;
         if (keep_second_first(f, edges[0], edges[1])) std::swap(edges[0], edges[1]);
         for (int k = 0; k < 2; ++k) {
             const int keep = edges[static_cast<std::size_t>(k)];
             const int change = edges[static_cast<std::size_t>(1 - k)];
-            // A point that came onto its edge by a merge or snap stays where it is: so a point
-            // goes only onto an edge of a face that holds it among the candidates, and is not
-            // carried along the band from face to face.
-            if (flags_.snapped[3 * f + static_cast<Index>(change)] ||
-                flags_.snapped[3 * f + static_cast<Index>(keep)]) {
-                continue;
-            }
             if (replace_if_sound(f, 1u << change, slot(f, keep))) {
                 mark_snapped(f, change);
                 return true;
