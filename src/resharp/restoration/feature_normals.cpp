@@ -108,17 +108,13 @@ void fit_faces(const Mesh& mesh, const Connectivity& c, const std::vector<Index>
 }
 
 /// The faces of any patch around v and its neighbours whose normals lie within the angle of
-/// `min_cosine` of n; with `band_roles` (#F), only those on no band.
+/// `min_cosine` of n.
 void near_faces(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>& normals, Index v,
-                const Vec3& n, double min_cosine, std::span<const BandRole> band_roles,
-                std::vector<Index>& out, std::vector<Index>& taken) {
+                const Vec3& n, double min_cosine, std::vector<Index>& out,
+                std::vector<Index>& taken) {
     gather_faces(
         mesh, c, v, [](Index) { return true; },
-        [&](Index f) {
-            return normals[f].dot(n) > min_cosine &&
-                   (band_roles.empty() || band_roles[f] == BandRole::None);
-        },
-        out, taken);
+        [&](Index f) { return normals[f].dot(n) > min_cosine; }, out, taken);
 }
 
 /// The linear model of fit_normal_at: per face the row (1, u, w) of its centroid's offset from
@@ -204,14 +200,13 @@ struct FitLimits {
     double near_cosine;   ///< of the widest angle to eq. 5.1's normal of near_faces()
 };
 
-/// What the fits read: the mesh, its face normals, the feature segmentation and the bands.
+/// What the fits read: the mesh, its face normals and the feature segmentation.
 struct FitSource {
     const Mesh& mesh;
     const Connectivity& connectivity;
     const std::vector<Vec3>& normals;  ///< per face
     const std::vector<Index>& face_patch;
     const std::vector<Index>& vertex_patch;
-    const std::vector<BandRole>& band_roles;  ///< per face
 };
 
 /// Buffers one worker reuses for every vertex.
@@ -228,39 +223,12 @@ bool coplanar(const std::vector<Vec3>& normals, std::span<const Index> faces) {
     });
 }
 
-/// A patch's faces are one strip of facets where the narrower axis of their centroids' spread
-/// is under this share of the wider. Measured at the band vertices with coplanar fit faces: 0.12
-/// on the strips of a bore 3.75 h in radius along a grid axis; on mech 24 vertices below 0.2,
-/// most near 0.5 (a plane's faces around a vertex and its neighbours).
-constexpr double kStripRatio = 0.2;
-
-/// Whether the samples' centroids (their rows' u, w) lie along a line (kStripRatio).
-bool lie_along_a_line(const FitSamples& samples) {
-    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-    for (const Eigen::Vector3d& row : samples.rows) mean += row.tail<2>();
-    mean /= static_cast<double>(samples.rows.size());
-    Eigen::Matrix2d spread = Eigen::Matrix2d::Zero();
-    for (const Eigen::Vector3d& row : samples.rows) {
-        const Eigen::Vector2d d = row.tail<2>() - mean;
-        spread += d * d.transpose();
-    }
-    // The eigenvalues of the 2x2 spread: the variances along its axes.
-    const double half_trace = 0.5 * spread.trace();
-    const double root = std::sqrt(std::max(0.0, half_trace * half_trace - spread.determinant()));
-    const double wide = half_trace + root, narrow = half_trace - root;
-    return narrow < kStripRatio * kStripRatio * wide;
-}
-
 /// The field of all the faces around v and its neighbours, of any patch, whose normals lie
-/// near n (limits.near_cosine), or of those of them on no band (`beyond_bands`); nullopt where
-/// their centroids do not span a plane.
+/// near n (limits.near_cosine); nullopt where their centroids do not span a plane.
 std::optional<NormalField> field_of_near_faces(const FitSource& in, Index v, const Vec3& n,
-                                               const FitLimits& limits, bool beyond_bands,
-                                               FitScratch& scratch) {
-    near_faces(
-        in.mesh, in.connectivity, in.normals, v, n, limits.near_cosine,
-        beyond_bands ? std::span<const BandRole>(in.band_roles) : std::span<const BandRole>(),
-        scratch.faces, scratch.taken);
+                                               const FitLimits& limits, FitScratch& scratch) {
+    near_faces(in.mesh, in.connectivity, in.normals, v, n, limits.near_cosine, scratch.faces,
+               scratch.taken);
     return fit_normal_at(in.mesh, in.normals, scratch.faces, v, n,
                          std::numeric_limits<double>::infinity(), scratch.samples);
 }
@@ -277,21 +245,10 @@ void refine_by_fit(const FitSource& in, Index v, const FitLimits& limits, Vec3& 
     if (scratch.faces.empty()) {
         // No face around v lies wholly on its feature (a strip narrower than a face): only the
         // faces beside it can tell how the surface turns.
-        if (auto near = field_of_near_faces(in, v, n, limits, false, scratch)) field = *near;
+        if (auto near = field_of_near_faces(in, v, n, limits, scratch)) field = *near;
         return;
     }
-    const double all = std::numeric_limits<double>::infinity();
-    if (coplanar(normals, scratch.faces)) {
-        // A plane, whose field is zero; but one strip of coplanar facets may be one facet of a
-        // curve (a cylinder a few cells in radius along a grid axis is such strips, a column of
-        // cells each, 15 to 55 degrees apart), and the faces beside it tell. Those of the band
-        // are left out: beside a plane strip one cell wide (a chamfer at 50 cells) they turn
-        // towards the plane across it, and their field would carry the two sides together.
-        fill_samples(mesh, normals, scratch.faces, v, n, scratch.samples);
-        if (!lie_along_a_line(scratch.samples)) return;
-        if (auto near = field_of_near_faces(in, v, n, limits, true, scratch)) field = *near;
-        return;
-    }
+    if (coplanar(normals, scratch.faces)) return;
     const auto fitted =
         fit_normal_at(mesh, normals, scratch.faces, v, n, limits.max_residual, scratch.samples);
     if (fitted && fitted->n0.dot(n) > limits.min_cosine) {
@@ -303,11 +260,12 @@ void refine_by_fit(const FitSource& in, Index v, const FitLimits& limits, Vec3& 
     // Eq. 5.1's normal stays, but how the feature turns still tells one smooth surface from
     // two (drop_smooth_crossings): on coarse facets of a small radius the faces stray from any
     // linear field by more than the trimming allows, so that field comes from all of them.
+    const double all = std::numeric_limits<double>::infinity();
     auto untrimmed = fit_normal_at(mesh, normals, scratch.faces, v, n, all, scratch.samples);
     if (!untrimmed) {
         // A patch one strip of facets wide (a cylinder a few cells in radius, along a grid
         // axis) cannot tell the slope across it: the faces near v that lie near its normal can.
-        untrimmed = field_of_near_faces(in, v, n, limits, false, scratch);
+        untrimmed = field_of_near_faces(in, v, n, limits, scratch);
     }
     if (untrimmed) field = *untrimmed;
 }
@@ -330,8 +288,7 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
         if (bands.face_role[f] == BandRole::None) continue;
         for (Index v : mesh.triangles[f]) needed[v] = 1;
     }
-    const FitSource source{mesh,       connectivity, face_normals,
-                           face_patch, vertex_patch, bands.face_role};
+    const FitSource source{mesh, connectivity, face_normals, face_patch, vertex_patch};
     FeatureNormals result(mesh.vertex_count());
     if (options.estimate == NormalEstimate::LinearFit) result.keep_fields();
     for (Index v = 0; v < mesh.vertex_count(); ++v) {

@@ -32,11 +32,10 @@ struct FeatureNormalOptions {
     /// 180 keeps every face.
     double max_fit_residual_deg = 1.4;
     /// Where the feature's own faces cannot be fitted (a patch one strip of facets wide, or
-    /// with no face wholly its own around the vertex) or are one strip of coplanar facets, the
-    /// normal field of NormalField is fitted to the faces near the vertex, of any patch (for
-    /// the coplanar strip, of no band), whose normals lie within this angle (degrees) of the
-    /// vertex's eq. 5.1 normal. It only serves to tell one smooth surface from two
-    /// (drop_smooth_crossings), not to place points.
+    /// with no face wholly its own around the vertex), the normal field of NormalField is
+    /// fitted to the faces near the vertex, of any patch, whose normals lie within this angle
+    /// (degrees) of the vertex's eq. 5.1 normal. It only serves to tell one smooth surface from
+    /// two (drop_smooth_crossings), not to place points.
     double near_face_angle_deg = 25.0;
 };
 
@@ -65,9 +64,8 @@ public:
     /// pieces face the way of their surface.
     float fit_correction_deg(Index v) const { return has_slot(v) ? corrections_[slot_[v]] : 0.0f; }
     /// The feature's normal field about v as the linear fit found it (NormalEstimate::
-    /// LinearFit; zero where there was none, as on planes but those one strip of facets wide),
-    /// also where the fit was not trusted to replace eq. 5.1's normal. drop_smooth_crossings()
-    /// carries it across a band.
+    /// LinearFit; zero where there was none, as on planes), also where the fit was not trusted
+    /// to replace eq. 5.1's normal. drop_smooth_crossings() carries it across a band.
     const NormalField& field(Index v) const {
         static const NormalField kNone;
         return has_slot(v) && !fields_.empty() ? fields_[slot_[v]] : kNone;
