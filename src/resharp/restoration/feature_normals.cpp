@@ -270,6 +270,23 @@ void refine_by_fit(const FitSource& in, Index v, const FitLimits& limits, Vec3& 
     if (untrimmed) field = *untrimmed;
 }
 
+/// v's feature normal in `result`: eq. 5.1's over its own patch (over its same-patch
+/// neighbours' where that has none), replaced by the linear fit (`linear_fit`) as
+/// refine_by_fit() decides, with the fit's correction and field.
+void set_feature_normal(const FitSource& in, Index v, bool linear_fit, const FitLimits& limits,
+                        FeatureNormals& result, FitScratch& scratch) {
+    Vec3 n =
+        own_patch_normal(in.mesh, in.connectivity, in.normals, in.face_patch, in.vertex_patch, v);
+    if (n.isZero(0.0)) {
+        n = neighbours_patch_normal(in.mesh, in.connectivity, in.normals, in.face_patch,
+                                    in.vertex_patch, v);
+    }
+    if (linear_fit && !n.isZero(0.0)) {
+        refine_by_fit(in, v, limits, n, result.fit_correction_at(v), result.field_at(v), scratch);
+    }
+    result.normal_at(v) = n;
+}
+
 }  // namespace
 
 FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivity,
@@ -289,29 +306,21 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
         for (Index v : mesh.triangles[f]) needed[v] = 1;
     }
     const FitSource source{mesh, connectivity, face_normals, face_patch, vertex_patch};
+    const bool linear_fit = options.estimate == NormalEstimate::LinearFit;
     FeatureNormals result(mesh.vertex_count());
-    if (options.estimate == NormalEstimate::LinearFit) result.keep_fields();
+    if (linear_fit) result.keep_fields();
     for (Index v = 0; v < mesh.vertex_count(); ++v) {
         if (needed[v] && vertex_patch[v] != kNoIndex) result.add(v);
     }
-    tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(mesh.vertex_count()), 4096),
-                      [&](const auto& range) {
-                          FitScratch scratch;
-                          for (Index v = range.begin(); v != range.end(); ++v) {
-                              if (!needed[v] || vertex_patch[v] == kNoIndex) continue;
-                              Vec3 n = own_patch_normal(mesh, connectivity, face_normals,
-                                                        face_patch, vertex_patch, v);
-                              if (n.isZero(0.0)) {
-                                  n = neighbours_patch_normal(mesh, connectivity, face_normals,
-                                                              face_patch, vertex_patch, v);
-                              }
-                              if (options.estimate == NormalEstimate::LinearFit && !n.isZero(0.0)) {
-                                  refine_by_fit(source, v, fit, n, result.fit_correction_at(v),
-                                                result.field_at(v), scratch);
-                              }
-                              result.normal_at(v) = n;
-                          }
-                      });
+    const tbb::blocked_range<Index> vertices(0, static_cast<Index>(mesh.vertex_count()), 4096);
+    tbb::parallel_for(vertices, [&](const auto& range) {
+        FitScratch scratch;
+        for (Index v = range.begin(); v != range.end(); ++v) {
+            if (needed[v] && vertex_patch[v] != kNoIndex) {
+                set_feature_normal(source, v, linear_fit, fit, result, scratch);
+            }
+        }
+    });
     return result;
 }
 
