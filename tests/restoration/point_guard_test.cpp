@@ -118,6 +118,42 @@ TEST(Guard, SplitsTwoEdgesAtTheCornerPointWhereOneIsNotEnough) {
     EXPECT_EQ(d.nonmanifold_vertices, 0u);
 }
 
+// A corner of mixed convexity, as cut from stepped_block turned 27 degrees at 100 cells (turned
+// back; a pitch is 0.73 mm): the slot's walls x = 0 and y = 0 (a concave edge up z) meet the
+// bottom z = 0 (two convex rims), the slot being x < 0, y > 0. The point of the corner
+// triangle's edge 0 lies beyond its chord, inside face 1, and the corner point goes on that
+// edge instead; vertex 3 of face 1 lies past the rim's end, so face 1's fan around its inner
+// point turns a piece over. The guard used to drop the corner point from edge 0 (the first
+// single point whose loss mends face 1), after which the corner triangle's pieces turned over
+// and it lost all its points; it now drops face 1's inner point, which lies on the line from
+// the corner point to face 1's other edge point, and every other point is kept.
+TEST(Guard, KeepsTheCornerPointOnAnEdgeAndDropsThePointInsideTheFaceAcross) {
+    const Vec3 left(-1, 0, 0), down(0, 0, -1), back(0, 1, 0);
+    const test::CornerWithNeighbours c(
+        {Vec3(0, 0.537, 0.604), Vec3(-0.026, -0.113, 0), Vec3(-0.722, 0, 0.579),
+         Vec3(0.145, 0.302, 0), Vec3(-0.761, 0, 0.103), Vec3(-0.537, 0, 0.82)},
+        {left, down, back, down, back, back},
+        {{4, Vec3(0, 0.419, 0)}, {7, Vec3(-0.39, 0, 0)}, {11, Vec3(0, 0, 0.72)}});
+    ASSERT_NE(c.corner(), kNoIndex);
+    EXPECT_TRUE(c.points.points[c.corner()].isZero(1e-12));
+    ASSERT_EQ(c.edge(0), c.corner());
+    const Index inside = c.points.slots.corner_point(1);
+    ASSERT_NE(inside, kNoIndex);
+    ASSERT_LT(inside, c.points.edge_points);
+    const GuardedPoints g = guard(c.s, c.points);
+    EXPECT_EQ(g.accepted.corner_point(0), c.corner());
+    EXPECT_EQ(g.accepted.edge_point(0), c.corner());
+    EXPECT_EQ(g.accepted.edge_point(1), c.edge(1));
+    EXPECT_EQ(g.accepted.edge_point(2), c.edge(2));
+    EXPECT_EQ(g.accepted.corner_point(1), kNoIndex);
+    EXPECT_EQ(g.report.refused_by_quality + g.report.refused_by_guard, 1u);
+    const SplitMesh split = split_faces(c.s.mesh, c.points.points, g.accepted);
+    const MeshDiagnostics d = diagnose(split.mesh, build_connectivity(split.mesh));
+    EXPECT_EQ(d.nonmanifold_edges, 0u);
+    EXPECT_EQ(d.inconsistent_edges, 0u);
+    EXPECT_EQ(d.degenerate_faces, 0u);
+}
+
 /// A band face that leans past the plane of its lone corner, as marching cubes leave them beside
 /// a concave edge of a turned block (cut from stepped_block turned 27 degrees at 200 cells; mm,
 /// about the edge): the top y = 0 (a, u) and the side x = 0 (b, c, w) meet along z. Face 0 (a, b,

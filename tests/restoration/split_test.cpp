@@ -71,5 +71,27 @@ TEST(Split, APointBeyondTheChordFansTheFaceThatHoldsIt) {
     }
 }
 
+// Where a sharp edge ends at a corner of mixed convexity, a face's corner can lie past the line
+// of the edge points beside it, and one of the two diagonals of the rest of the face turns a
+// piece over. Here face (a, b, c) in z = 0 holds p on edge b-c and r on edge c-a; c is cut off
+// as an ear and the quad (a, b, p, r) is left, with p inside triangle (a, b, r). Diagonal b-r
+// gives the better-shaped worse triangle by area alone (0.64 against 0.16) but its piece
+// (b, p, r) is turned over; the split takes a-p.
+TEST(Split, TakesTheDiagonalThatTurnsNoPieceOver) {
+    Mesh mesh;
+    mesh.positions = {Vec3(0, 0, 0), Vec3(4, 0, 0), Vec3(0, 4, 0)};
+    mesh.triangles = {{0, 1, 2}};
+    const std::vector<Vec3> points{Vec3(1, 0.3, 0), Vec3(0, 3, 0)};
+    PointSlots slots(1);
+    slots.set_edge_point(1, 0);  // edge b-c
+    slots.set_edge_point(2, 1);  // edge c-a
+    const SplitMesh out = split_faces(mesh, points, slots);
+    ASSERT_EQ(out.mesh.face_count(), 3u);
+    const auto& x = out.mesh.positions;
+    for (const Triangle& t : out.mesh.triangles) {
+        EXPECT_GT(triangle_normal(x[t[0]], x[t[1]], x[t[2]]).z(), 0.0);
+    }
+}
+
 }  // namespace
 }  // namespace resharp

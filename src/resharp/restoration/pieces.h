@@ -50,13 +50,17 @@ inline constexpr double kQualityTie = 1e-6;
 
 /// Shape quality of a triangle, 1 for equilateral and 0 for degenerate: 4 sqrt(3) area over
 /// the sum of squared edge lengths. Ranks triangles like their smallest angle, without
-/// trigonometry.
-inline double shape_quality(const PieceVertices& ids, Index a, Index b, Index c) {
+/// trigonometry. Negative where the triangle turns against `facing` (the normal of the face
+/// it is cut from), so that a split with a piece turned over ranks below any split without.
+inline double shape_quality(const PieceVertices& ids, Index a, Index b, Index c,
+                            const Vec3& facing) {
     const Vec3 &pa = ids.position(a), &pb = ids.position(b), &pc = ids.position(c);
     const double edges =
         (pb - pa).squaredNorm() + (pc - pb).squaredNorm() + (pa - pc).squaredNorm();
     if (edges == 0.0) return 0.0;
-    return 2.0 * std::sqrt(3.0) * (pb - pa).cross(pc - pa).norm() / edges;
+    const Vec3 n = (pb - pa).cross(pc - pa);
+    const double quality = 2.0 * std::sqrt(3.0) * n.norm() / edges;
+    return n.dot(facing) > 0.0 ? quality : -quality;
 }
 
 /// Whether the quad `rest` is split along its diagonal 0-2 rather than 1-3, given the worse
@@ -64,7 +68,7 @@ inline double shape_quality(const PieceVertices& ids, Index a, Index b, Index c)
 /// corner in geometric order, which the face's numbering does not change.
 inline bool diagonal_02_is_better(const PieceVertices& ids, const FacePolygon& rest,
                                   double quality_02, double quality_13) {
-    const double tie = kQualityTie * std::max(quality_02, quality_13);
+    const double tie = kQualityTie * std::max(std::abs(quality_02), std::abs(quality_13));
     if (std::abs(quality_02 - quality_13) > tie) return quality_02 > quality_13;
     int first = 0;
     for (int i = 1; i < 4; ++i) {
@@ -124,10 +128,17 @@ void for_each_piece(const Mesh& mesh, const PointSlots& slots, const PieceVertic
     using detail::shape_quality;
     const bool may_use_02 = !(ids.is_original(rest.at(0)) && ids.is_original(rest.at(2)));
     const bool may_use_13 = !(ids.is_original(rest.at(1)) && ids.is_original(rest.at(3)));
-    const double quality_02 = std::min(shape_quality(ids, rest.at(0), rest.at(1), rest.at(2)),
-                                       shape_quality(ids, rest.at(0), rest.at(2), rest.at(3)));
-    const double quality_13 = std::min(shape_quality(ids, rest.at(1), rest.at(2), rest.at(3)),
-                                       shape_quality(ids, rest.at(1), rest.at(3), rest.at(0)));
+    // A quad whose corner lies past the line of the sharp edge (beside a corner of mixed
+    // convexity, where the edge ends) turns one piece over with one diagonal only.
+    const auto& t = mesh.triangles[f];
+    const Vec3 facing = (mesh.positions[t[1]] - mesh.positions[t[0]])
+                            .cross(mesh.positions[t[2]] - mesh.positions[t[0]]);
+    const double quality_02 =
+        std::min(shape_quality(ids, rest.at(0), rest.at(1), rest.at(2), facing),
+                 shape_quality(ids, rest.at(0), rest.at(2), rest.at(3), facing));
+    const double quality_13 =
+        std::min(shape_quality(ids, rest.at(1), rest.at(2), rest.at(3), facing),
+                 shape_quality(ids, rest.at(1), rest.at(3), rest.at(0), facing));
     // Within kQualityTie the diagonals are alike: a symmetric quad (two points mirrored about
     // its diagonal, as on a boss) ties exactly, and neither the last bits of the points, which
     // differ with where the part lies, nor the corner the face starts at may choose.

@@ -234,13 +234,16 @@ private:
 /// holding one.
 class Repairs {
 public:
+    /// `first_corner_point`: the candidates' corner points are the points from it on
+    /// (SharpPoints::points).
     Repairs(const InputSurface& input, PointSlots slots, const PieceVertices& ids,
-            const PieceJudge& judge, GuardFlags& flags)
+            const PieceJudge& judge, Index first_corner_point, GuardFlags& flags)
         : input_(input),
           c_(input.connectivity),
           slots_(std::move(slots)),
           ids_(ids),
           judge_(judge),
+          first_corner_point_(first_corner_point),
           flags_(flags) {}
 
     const PointSlots& slots() const { return slots_; }
@@ -254,7 +257,9 @@ public:
     /// - put one of its two edge points on the other's edge too (try_merging()): two close
     ///   points out of order along the sharp edge make a flipped sliver, and one point on both
     ///   edges still restores the sharp edge through both;
-    /// - drop a single edge point (the first that is enough, in slot order);
+    /// - drop a single edge point (the first that is enough, in slot order), but a corner point
+    ///   that the corner triangle across put on the edge only after the point of a crossing
+    ///   edge that f holds inside (first_single_drop());
     /// - in a corner triangle, split one edge, then two, at the corner point instead of their
     ///   own points where those lie beyond the corner (beyond_corner()): where a sharp edge ends
     ///   at a corner, eq. 5.2's mid-plane can put its point past the corner, on the edge's
@@ -266,9 +271,7 @@ public:
     /// Returns the number of points dropped.
     std::size_t repair(Index f) {
         if (try_merging(f)) return 0;
-        for (int i = 0; i < 3; ++i) {
-            if (slot(f, i) != kNoIndex && replace_if_sound(f, 1u << i, kNoIndex)) return 1;
-        }
+        if (first_single_drop(f)) return 1;
         if (try_snapping(f, true)) return 0;
         if (slot(f, 3) != kNoIndex && replace_if_sound(f, 1u << 3, kNoIndex)) return 1;
         if (try_snapping(f, false)) return 0;
@@ -284,6 +287,42 @@ public:
 private:
     /// Slot i of face f: its half-edges 0..2, then its corner (3).
     Index slot(Index f, int i) const { return slots_.slot(f, i); }
+
+    /// Whether edge i of face f holds the corner point of the corner triangle across it (put
+    /// there because its own point lies beyond its chord, or snapped), not one of f's own.
+    bool holds_corner_across(Index f, int i) const {
+        const Index p = slot(f, i);
+        return p != kNoIndex && p >= first_corner_point_ && p != slot(f, 3);
+    }
+
+    /// The single-drop step of repair(): drops the first point of face f whose drop alone is
+    /// enough, in slot order among its edges, except that an edge holding the corner point of
+    /// the corner triangle across comes last, after the crossing edge's point f holds inside.
+    /// Such a face lies where a sharp edge ends at a corner of mixed convexity (a slot's rim
+    /// meeting the bottom face): its inner point and the corner point lie on one line with
+    /// the vertex beyond the corner on the wrong side, and dropping the corner point there
+    /// broke the corner triangle, whose pieces then turned over and lost all their points.
+    bool first_single_drop(Index f) {
+        bool corner_across = false;
+        for (int i = 0; i < 3; ++i) {
+            if (holds_corner_across(f, i)) {
+                corner_across = true;
+            } else if (slot(f, i) != kNoIndex && replace_if_sound(f, 1u << i, kNoIndex)) {
+                return true;
+            }
+        }
+        if (!corner_across) return false;
+        const Index inside = slot(f, 3);
+        if (inside != kNoIndex && inside < first_corner_point_ &&
+            replace_if_sound(f, 1u << 3, kNoIndex)) {
+            return true;
+        }
+        for (int i = 0; i < 3; ++i) {
+            if (holds_corner_across(f, i) && replace_if_sound(f, 1u << i, kNoIndex)) return true;
+        }
+        return false;
+    }
+
     /// Sets slot i of face f, and for an edge the same slot seen from the face across it.
     void set(Index f, int i, Index value) {
         slots_.set_slot(f, i, value);
@@ -428,6 +467,7 @@ private:
     PointSlots slots_;
     const PieceVertices& ids_;
     const PieceJudge& judge_;
+    Index first_corner_point_;
     GuardFlags& flags_;  ///< which faces a slot of was set, and which edges were snapped
 };
 
@@ -653,7 +693,8 @@ GuardedPoints guard_slots(const InputSurface& input, const FeatureNormals& featu
     const PieceVertices ids(input.mesh, candidates.points);
     const ReferenceNormals reference{feature_normals, input.normals.vertex};
     const PieceJudge judge(input, reference, ids, options.thin_material_angle_deg);
-    Repairs repairs(input, std::move(slots), ids, judge, flags);
+    Repairs repairs(input, std::move(slots), ids, judge, static_cast<Index>(candidates.edge_points),
+                    flags);
     repair_faults(input.connectivity, first, repairs, flags.queued, log);
     GuardedPoints out{std::move(repairs).take_slots(), report_of(log), std::move(log)};
     RESHARP_EXPENSIVE_ASSERT(only_takes_away(out.accepted, candidates, input.connectivity));
