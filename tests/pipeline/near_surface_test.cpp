@@ -9,6 +9,10 @@
 #include <vector>
 
 #include "resharp/pipeline/restore.h"
+#include "resharp/sim/csg.h"
+#include "resharp/sim/csg_file.h"
+#include "resharp/sim/marching_cubes.h"
+#include "resharp/sim/tridexel.h"
 #include "support/invariants.h"
 #include "support/small_parts.h"
 
@@ -160,6 +164,38 @@ TEST(NearSurface, AMidpointMeshWhoseMovesFailIsRestoredOnTheExactPath) {
     EXPECT_EQ(near.report.feature_patches, exact.report.feature_patches);
     EXPECT_EQ(near.mesh.positions, exact.mesh.positions);
     EXPECT_EQ(near.mesh.triangles, exact.mesh.triangles);
+}
+
+/// examples/cad/chamfered_block.json meshed by surface nets at 100 cells (h = 0.5 mm), as
+/// `resharp simulate --solid --cells 100 --mesher surface-nets` meshes it: its chamfers are
+/// strips nine cells wide.
+Mesh chamfered_block_by_surface_nets() {
+    const sim::CsgSolid solid(
+        sim::read_csg(std::string(RESHARP_SOURCE_DIR) + "/examples/cad/chamfered_block.json"));
+    const sim::DexelGrid grid = sim::sample_solid(
+        sim::phased_grid(solid.bounds(), sim::pitch_for_cells(solid.bounds(), 100), 0.4142), solid);
+    sim::MeshingOptions meshing;
+    meshing.mesher = sim::Mesher::SurfaceNets;
+    return sim::mesh_dexels(grid, meshing).mesh;
+}
+
+// A flat strip of facets tells how a small cylinder turns only where the vertices lie on the
+// surface: on a surface-nets mesh the border of a wide chamfer is such a strip too
+// (FeatureNormalOptions::fields_along_coplanar_strips), and its edge would pass for smooth.
+// restore() reads no field off one on a near-surface mesh, whatever the caller's options say,
+// though on the exact path the same mesh restores otherwise with them.
+TEST(NearSurface, ReadsNoFieldOffAFlatStripOfANearSurfaceMesh) {
+    const Mesh input = chamfered_block_by_surface_nets();
+    RestoreOptions with;
+    RestoreOptions without;
+    without.normals.fields_along_coplanar_strips = false;
+    const RestoreResult near = restore(input, with);
+    ASSERT_EQ(near.report.vertex_placement, "near");
+    const RestoreResult near_without = restore(input, without);
+    EXPECT_EQ(near.mesh.positions, near_without.mesh.positions);
+    EXPECT_EQ(near.mesh.triangles, near_without.mesh.triangles);
+    with.vertices.mode = without.vertices.mode = VertexMode::Exact;
+    EXPECT_NE(restore(input, with).mesh.positions, restore(input, without).mesh.positions);
 }
 
 TEST(NearSurface, ExactModeMovesNothing) {

@@ -195,10 +195,12 @@ void classify_and_fit_normals(const Mesh& mesh, Detection& d, const RestoreOptio
 
 /// detect_bands(), calling after_curvature() once the curvatures are estimated: the normals and
 /// curvatures run in parallel, the segmentations mostly on one thread, so that work started
-/// then finds a second thread free.
-template <class AfterCurvature>
+/// then finds a second thread free. The classification and the feature normals take the options
+/// options_for_normals() gives once the segmentations are done.
+template <class AfterCurvature, class OptionsForNormals>
 Detection detect_bands_calling(const Mesh& mesh, std::shared_ptr<const Connectivity> shared,
-                               const RestoreOptions& options, AfterCurvature&& after_curvature) {
+                               const RestoreOptions& options, AfterCurvature&& after_curvature,
+                               OptionsForNormals&& options_for_normals) {
     Detection d;
     d.connectivity = std::move(shared);
     const Connectivity& connectivity = *d.connectivity;
@@ -237,7 +239,7 @@ Detection detect_bands_calling(const Mesh& mesh, std::shared_ptr<const Connectiv
         d.features = segment_features(mesh, connectivity, d.normals.face, std::move(regions),
                                       d.edges.is_edge, options.features);
     });
-    classify_and_fit_normals(mesh, d, options, clock);
+    classify_and_fit_normals(mesh, d, options_for_normals(), clock);
     return d;
 }
 
@@ -245,7 +247,9 @@ Detection detect_bands_calling(const Mesh& mesh, std::shared_ptr<const Connectiv
 
 Detection detect_bands(const Mesh& mesh, std::shared_ptr<const Connectivity> connectivity,
                        const RestoreOptions& options) {
-    return detect_bands_calling(mesh, std::move(connectivity), options, [] {});
+    return detect_bands_calling(
+        mesh, std::move(connectivity), options, [] {},
+        [&]() -> const RestoreOptions& { return options; });
 }
 
 Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const RestoreOptions& options) {
@@ -510,21 +514,37 @@ private:
     /// STL file, issue 11's speed budget); with one, it runs first, so that its buffers are
     /// gone before the detection allocates (the peak-memory budget). The detection stays on
     /// the calling thread, which is the one StopWhen::cancelled is promised to be asked from.
+    /// The feature normals wait for the measurement: what they may read off a flat strip
+    /// depends on where the vertices lie (adopt()).
     void measure_placement_and_detect(const Mesh& mesh,
                                       std::shared_ptr<const Connectivity> connectivity,
                                       PlacementChoice& placement, Detection& detection) {
         if (tbb::this_task_arena::max_concurrency() < 2) {
             placement = choose_placement(mesh);
+            adopt(placement);
             detection = detect_bands(mesh, std::move(connectivity), options_);
             return;
         }
         tbb::task_group beside;
         // If the detection throws (cancelled), the group's destructor waits for the
         // measurement before `placement` goes out of scope.
-        detection = detect_bands_calling(mesh, std::move(connectivity), options_, [&] {
-            beside.run([&] { placement = choose_placement(mesh); });
-        });
-        beside.wait();
+        detection = detect_bands_calling(
+            mesh, std::move(connectivity), options_,
+            [&] { beside.run([&] { placement = choose_placement(mesh); }); },
+            [&]() -> const RestoreOptions& {
+                beside.wait();
+                adopt(placement);
+                return options_;
+            });
+    }
+
+    /// The options for a mesh whose vertices lie as `choice` says: a flat strip of facets tells
+    /// a smooth surface's turn only where the vertices lie on the surface
+    /// (FeatureNormalOptions::fields_along_coplanar_strips).
+    void adopt(const PlacementChoice& choice) {
+        if (choice.placement != VertexPlacement::Exact) {
+            options_.normals.fields_along_coplanar_strips = false;
+        }
     }
 
     /// Records what `detection` found on `mesh` and restores its bands, the split held against
@@ -749,7 +769,8 @@ private:
     std::size_t input_faces_;
     Mesh* owned_;
     DroppedFaces& dropped_;
-    const RestoreOptions& options_;
+    /// The caller's options, as adopt() adapts them to the vertices' placement.
+    RestoreOptions options_;
     RestoreResult& result_;
     RestoreReport& report_;
 };

@@ -198,6 +198,7 @@ struct FitLimits {
     double min_cosine;    ///< of the largest correction of eq. 5.1's normal
     double max_residual;  ///< chord between a face normal and the first fit
     double near_cosine;   ///< of the widest angle to eq. 5.1's normal of near_faces()
+    bool strip_fields;    ///< FeatureNormalOptions::fields_along_coplanar_strips
 };
 
 /// What the fits read: the mesh, its face normals and the feature segmentation.
@@ -221,6 +222,30 @@ bool coplanar(const std::vector<Vec3>& normals, std::span<const Index> faces) {
     return std::all_of(faces.begin(), faces.end(), [&](Index f) {
         return (normals[f] - normals[faces[0]]).squaredNorm() < 1e-16;
     });
+}
+
+/// Whether the faces' centroids lie along one strip: across it, in the tangent plane of n,
+/// their spread (standard deviation) is under a fifth of their spread along it.
+bool along_one_strip(const Mesh& mesh, std::span<const Index> faces, const Vec3& n) {
+    const Vec3 t1 = n.unitOrthogonal();
+    const Vec3 t2 = n.cross(t1);
+    const Vec3& origin = mesh.positions[mesh.triangles[faces[0]][0]];  // small offsets: rounding
+    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+    Eigen::Matrix2d products = Eigen::Matrix2d::Zero();
+    for (Index f : faces) {
+        const Triangle& t = mesh.triangles[f];
+        const Vec3 c =
+            (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0 - origin;
+        const Eigen::Vector2d p(c.dot(t1), c.dot(t2));
+        sum += p;
+        products += p * p.transpose();
+    }
+    const double count = static_cast<double>(faces.size());
+    const Eigen::Matrix2d spread = products / count - (sum / count) * (sum / count).transpose();
+    // The eigenvalues of the 2x2 covariance: its half trace plus and minus this radius.
+    const double half_trace = 0.5 * spread.trace();
+    const double radius = std::hypot(0.5 * (spread(0, 0) - spread(1, 1)), spread(0, 1));
+    return half_trace - radius < 0.04 * (half_trace + radius);
 }
 
 /// The field of all the faces around v and its neighbours, of any patch, whose normals lie
@@ -248,7 +273,14 @@ void refine_by_fit(const FitSource& in, Index v, const FitLimits& limits, Vec3& 
         if (auto near = field_of_near_faces(in, v, n, limits, scratch)) field = *near;
         return;
     }
-    if (coplanar(normals, scratch.faces)) return;
+    if (coplanar(normals, scratch.faces)) {
+        // The feature is flat around v, but a strip of facets of a small cylinder is flat too:
+        // the faces beside it tell how the surface turns (drop_smooth_crossings).
+        if (limits.strip_fields && along_one_strip(mesh, scratch.faces, n)) {
+            if (auto near = field_of_near_faces(in, v, n, limits, scratch)) field = *near;
+        }
+        return;
+    }
     const auto fitted =
         fit_normal_at(mesh, normals, scratch.faces, v, n, limits.max_residual, scratch.samples);
     if (fitted && fitted->n0.dot(n) > limits.min_cosine) {
@@ -299,7 +331,8 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
     const double degree = std::numbers::pi / 180.0;
     const FitLimits fit{std::cos(options.max_fit_correction_deg * degree),
                         2.0 * std::sin(options.max_fit_residual_deg * degree / 2.0),
-                        std::cos(options.near_face_angle_deg * degree)};
+                        std::cos(options.near_face_angle_deg * degree),
+                        options.fields_along_coplanar_strips};
     std::vector<std::uint8_t> needed(mesh.vertex_count(), 0);
     for (Index f = 0; f < mesh.face_count(); ++f) {
         if (bands.face_role[f] == BandRole::None) continue;

@@ -37,6 +37,13 @@ struct FeatureNormalOptions {
     /// (degrees) of the vertex's eq. 5.1 normal. It only serves to tell one smooth surface from
     /// two (drop_smooth_crossings), not to place points.
     double near_face_angle_deg = 25.0;
+    /// Where the feature's own faces around a vertex are coplanar but lie along one strip (a
+    /// facet strip of a cylinder a few cells in radius, along a grid axis), that field too is
+    /// fitted to the faces near the vertex. Only for meshes whose vertices lie on the surface
+    /// (restore() turns it off on near-surface and midpoint meshes): there a coplanar strip is
+    /// a strip of one smooth surface, while on a surface-nets mesh the border of a wide
+    /// chamfer is such a strip too, and the faces near it would make its edge look smooth.
+    bool fields_along_coplanar_strips = true;
 };
 
 /// A normal field about a vertex x_v: n(x) = n0 + gradient (x - x_v), n0 unit.
