@@ -538,8 +538,8 @@ private:
             });
     }
 
-    /// The options for a mesh whose vertices lie as `choice` says: a flat strip of facets tells
-    /// a smooth surface's turn only where the vertices lie on the surface
+    /// Adapts the options to a mesh whose vertices lie as `choice` says: a flat strip of facets
+    /// tells a smooth surface's turn only where the vertices lie on the surface
     /// (FeatureNormalOptions::fields_along_coplanar_strips).
     void adopt(const PlacementChoice& choice) {
         if (choice.placement != VertexPlacement::Exact) {
