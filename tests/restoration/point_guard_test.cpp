@@ -24,6 +24,16 @@ GuardedPoints guard(const test::Strip& s, const SharpPoints& points,
     return guard_points(s.surface(), s.feature_normals, points, withdrawn);
 }
 
+/// The split's diagnostics, after expecting it manifold, consistently oriented and without
+/// degenerate faces.
+MeshDiagnostics expect_sound(const SplitMesh& split) {
+    const MeshDiagnostics d = diagnose(split.mesh, build_connectivity(split.mesh));
+    EXPECT_EQ(d.nonmanifold_edges, 0u);
+    EXPECT_EQ(d.inconsistent_edges, 0u);
+    EXPECT_EQ(d.degenerate_faces, 0u);
+    return d;
+}
+
 TEST(Guard, AcceptsTheIdealPoint) {
     const test::Strip s = test::make_strip();
     const SharpPoints points = test::points_on_edge_a1_b0(s);
@@ -111,11 +121,7 @@ TEST(Guard, SplitsTwoEdgesAtTheCornerPointWhereOneIsNotEnough) {
     EXPECT_EQ(g.accepted.edge_point(c.twin(2)), c.corner());
     EXPECT_EQ(g.report.refused_by_quality + g.report.refused_by_guard, 0u);
     const SplitMesh split = split_faces(c.s.mesh, c.points.points, g.accepted);
-    const MeshDiagnostics d = diagnose(split.mesh, build_connectivity(split.mesh));
-    EXPECT_EQ(d.nonmanifold_edges, 0u);
-    EXPECT_EQ(d.inconsistent_edges, 0u);
-    EXPECT_EQ(d.degenerate_faces, 0u);
-    EXPECT_EQ(d.nonmanifold_vertices, 0u);
+    EXPECT_EQ(expect_sound(split).nonmanifold_vertices, 0u);
 }
 
 // A corner of mixed convexity, as cut from stepped_block turned 27 degrees at 100 cells (turned
@@ -148,10 +154,7 @@ TEST(Guard, KeepsTheCornerPointOnAnEdgeAndDropsThePointInsideTheFaceAcross) {
     EXPECT_EQ(g.accepted.corner_point(1), kNoIndex);
     EXPECT_EQ(g.report.refused_by_quality + g.report.refused_by_guard, 1u);
     const SplitMesh split = split_faces(c.s.mesh, c.points.points, g.accepted);
-    const MeshDiagnostics d = diagnose(split.mesh, build_connectivity(split.mesh));
-    EXPECT_EQ(d.nonmanifold_edges, 0u);
-    EXPECT_EQ(d.inconsistent_edges, 0u);
-    EXPECT_EQ(d.degenerate_faces, 0u);
+    expect_sound(split);
 }
 
 /// A band face that leans past the plane of its lone corner, as marching cubes leave them beside
@@ -206,10 +209,7 @@ TEST(Guard, PutsTwoPointsOutOfOrderOnBothEdgesAsOne) {
         EXPECT_EQ(g.accepted.edge_point(h) != kNoIndex, points.slots.edge_point(h) != kNoIndex);
     }
     const SplitMesh split = split_faces(s.mesh, points.points, g.accepted);
-    const MeshDiagnostics d = diagnose(split.mesh, build_connectivity(split.mesh));
-    EXPECT_EQ(d.nonmanifold_edges, 0u);
-    EXPECT_EQ(d.inconsistent_edges, 0u);
-    EXPECT_EQ(d.degenerate_faces, 0u);
+    expect_sound(split);
     for (const Triangle& t : split.mesh.triangles) {  // each piece faces its input corners' side
         const Vec3 n = triangle_normal(split.mesh.positions[t[0]], split.mesh.positions[t[1]],
                                        split.mesh.positions[t[2]]);
