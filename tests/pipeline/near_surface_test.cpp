@@ -181,14 +181,14 @@ Mesh chamfered_block_by_surface_nets() {
 
 // A flat strip of facets tells how a small cylinder turns only where the vertices lie on the
 // surface: on a surface-nets mesh the border of a wide chamfer is such a strip too
-// (FeatureNormalOptions::fields_along_coplanar_strips), and its edge would pass for smooth.
+// (FeatureNormalOptions::vertices_on_surface), and its edge would pass for smooth.
 // restore() reads no field off one on a near-surface mesh, whatever the caller's options say,
 // though on the exact path the same mesh restores otherwise with them.
 TEST(NearSurface, ReadsNoFieldOffAFlatStripOfANearSurfaceMesh) {
     const Mesh input = chamfered_block_by_surface_nets();
     RestoreOptions with;
     RestoreOptions without;
-    without.normals.fields_along_coplanar_strips = false;
+    without.normals.vertices_on_surface = false;
     const RestoreResult near = restore(input, with);
     ASSERT_EQ(near.report.vertex_placement, "near");
     const RestoreResult near_without = restore(input, without);

@@ -1,8 +1,8 @@
 // Smooth surfaces stay smooth (issue 13, item 3): cylinders, cones, spheres, tori and a fillet of
-// radius 5 h to 100 h, aligned with the grid and turned off it, sampled as the simulator samples
+// radius 3 h to 100 h, aligned with the grid and turned off it, sampled as the simulator samples
 // them, get no new point and no new crease away from their true sharp edges. Each case is paired
 // with a sharp hexagonal prism of similar size whose edges must come back, so a restorer that
-// does nothing cannot pass. At 3 h the test is weaker, and says so.
+// does nothing cannot pass.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -62,8 +62,8 @@ CsgNode sphere_part(double r) {
     return combine(CsgOp::Intersection, {s, box(Vec3(-w, -w, bottom), Vec3(w, w, r + 1.0))});
 }
 
-/// A frustum of radii r and r / 2 along z over kLength: its side curves by 1/r to 2/r.
-CsgNode cone_part(double r) { return primitive(sim::ConeShape{kLength, r, r / 2.0}); }
+/// A frustum of radii 1.5 r and r along z over kLength: its side curves by 1/(1.5 r) to 1/r.
+CsgNode cone_part(double r) { return primitive(sim::ConeShape{kLength, 1.5 * r, r}); }
 
 /// A ring torus of tube radius r (major radius 2 r + 2 h): smooth everywhere.
 CsgNode torus_part(double r) { return primitive(sim::TorusShape{2.0 * r + 2.0, r}); }
@@ -148,9 +148,16 @@ struct Case {
     bool rotated;
 };
 
+/// family_rR[_QQ]_aligned|rotated, QQ the hundredths of a fractional radius.
 std::string case_name(const testing::TestParamInfo<Case>& info) {
-    return info.param.family + "_r" + std::to_string(static_cast<int>(info.param.radius)) +
-           (info.param.rotated ? "_rotated" : "_aligned");
+    const double r = info.param.radius;
+    const int whole = static_cast<int>(r);
+    const int hundredths = static_cast<int>(std::lround(100.0 * (r - whole)));
+    std::string name = info.param.family;
+    name.append("_r").append(std::to_string(whole));
+    if (hundredths > 0) name.append("_").append(std::to_string(hundredths));
+    name.append(info.param.rotated ? "_rotated" : "_aligned");
+    return name;
 }
 
 CsgNode smooth_solid(const Case& c) {
@@ -164,8 +171,11 @@ CsgNode smooth_solid(const Case& c) {
 
 class SmoothSolids : public testing::TestWithParam<Case> {};
 
-// A smooth surface of 5 h and more gets no new point away from its true sharp edges and no new
+// A smooth surface of 3 h and more gets no new point away from its true sharp edges and no new
 // crease there; the prism of similar size beside it gets its edges back, so doing nothing fails.
+// Below 5 h a vertex's own feature often has too few faces to tell how it turns, and the faces
+// off the bands around it tell (FeatureNormalOptions::vertices_on_surface): without them the
+// cylinder of 3.5 h aligned got 39 phantom points, the tori of 3 h 39 and 29.
 TEST_P(SmoothSolids, GetNoPhantomFeaturesWhileThePrismIsRestored) {
     const Case& c = GetParam();
     const Outcome smooth = sample_and_restore(oriented(smooth_solid(c), c.rotated));
@@ -180,23 +190,6 @@ TEST_P(SmoothSolids, GetNoPhantomFeaturesWhileThePrismIsRestored) {
         sample_and_restore(oriented(hex_prism(std::clamp(c.radius, 5.0, 10.0)), c.rotated));
     EXPECT_GE(prism.recall, 0.85) << "the prism's edges are not restored";
     EXPECT_EQ(prism.inserted_astray, 0u);
-}
-
-class ThreeCellSolids : public testing::TestWithParam<Case> {};
-
-// At 3 h the facets turn by some 20 degrees from one to the next and the fitted normal fields
-// are rough (docs/method.md, "Smooth surfaces"): the continuation test must at least halve
-// the phantom points the paper's rule inserts, and leave none where that rule leaves none.
-TEST_P(ThreeCellSolids, GetAtMostHalfThePhantomPointsOfThePapersRule) {
-    const Case& c = GetParam();
-    const CsgNode solid = oriented(smooth_solid(c), c.rotated);
-    RestoreOptions paper_rule;
-    paper_rule.bands.smooth_continuation_angle_deg = 0.0;
-    const Outcome before = sample_and_restore(solid, paper_rule);
-    const Outcome after = sample_and_restore(solid);
-    EXPECT_LE(2 * after.inserted_astray, before.inserted_astray)
-        << "phantom points " << before.inserted_astray << " -> " << after.inserted_astray;
-    EXPECT_LE(after.output_stray_crease, before.output_stray_crease + 1e-9);
 }
 
 /// A block 20 h square and kLength high with a bore of radius r along z, a grid axis.
@@ -217,13 +210,14 @@ CsgNode post_on_block(double r) {
 // A cylinder a few cells in radius along a grid axis is sampled as strips of facets, a column
 // of cells each, 15 to 55 degrees apart: a side of a crossing edge between two strips may have
 // no face wholly its own, or only faces of one flat strip, and then no field of its own
-// (docs/method.md, "Smooth surfaces"). Bores and posts from 3.25 h to 6 h in steps of a
-// quarter cell, each rim a true sharp edge. Without the field of the faces beside such a side,
-// the bore of 3.75 h got a line of 47 points down its wall, and with it alone the bore of 3.5 h
-// still got 24, where a side's faces are one flat strip. Below, with this grid's phase, the
-// bore of 3 h gets no point astray but its input edges between strips sharpen past 30 degrees.
+// (docs/method.md, "Smooth surfaces"). Bores and posts from 3 h to 6 h in steps of a quarter
+// cell, each rim a true sharp edge. Without the field of the faces beside such a side, the bore
+// of 3.75 h got a line of 47 points down its wall, and with it alone the bore of 3.5 h still got
+// 24, where a side's faces are one flat strip; the bore of 3 h, no point astray, but its input
+// edges between strips sharpened past 30 degrees until the sides with few faces of their own
+// took the field of the faces off the bands around them.
 TEST(SmoothSolidsAlongAGridAxis, BoresAndPostsOfFourCellsGetNoPhantomPointsAndKeepTheirRims) {
-    for (double r = 3.25; r <= 6.0; r += 0.25) {
+    for (double r = 3.0; r <= 6.0; r += 0.25) {
         for (const bool bore : {true, false}) {
             const Outcome o = sample_and_restore(bore ? bored_block(r) : post_on_block(r));
             const std::string what = (bore ? "bore of " : "post of ") + std::to_string(r) + " h";
@@ -250,7 +244,8 @@ std::vector<Case> cases(const std::vector<double>& radii) {
 
 INSTANTIATE_TEST_SUITE_P(Radii, SmoothSolids, testing::ValuesIn(cases({5.0, 10.0, 30.0, 100.0})),
                          case_name);
-INSTANTIATE_TEST_SUITE_P(Radius3, ThreeCellSolids, testing::ValuesIn(cases({3.0})), case_name);
+INSTANTIATE_TEST_SUITE_P(SmallRadii, SmoothSolids,
+                         testing::ValuesIn(cases({3.0, 3.25, 3.5, 3.75, 4.0, 4.5})), case_name);
 
 }  // namespace
 }  // namespace resharp

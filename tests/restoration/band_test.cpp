@@ -83,6 +83,25 @@ TEST(FeatureNormals, HoldNormalsCorrectionsAndFieldsOfTheVerticesGivenRoomAlone)
     EXPECT_TRUE(FeatureNormals().field(0).n0.isZero(0.0));
 }
 
+TEST(FeatureNormals, CarryTheFieldAcrossABandUnlessAContinuationFieldIsSetApart) {
+    FeatureNormals n(4);
+    n.keep_fields();
+    n.add(1);
+    n.add(3);
+    n.field_at(1) = {Vec3(0, 0, 1), Eigen::Matrix3d::Zero()};
+    n.field_at(3) = {Vec3(0, 1, 0), Eigen::Matrix3d::Zero()};
+    EXPECT_EQ(n.continuation_field(1).n0, Vec3(0, 0, 1));  // none kept apart: the field
+    n.keep_continuation_fields();
+    n.continuation_field_at(1) = {Vec3(1, 0, 0), Eigen::Matrix3d::Identity()};
+    EXPECT_EQ(n.continuation_field(1).gradient, Eigen::Matrix3d::Identity());
+    EXPECT_EQ(n.field(1).n0, Vec3(0, 0, 1));               // the field stays as it was
+    EXPECT_EQ(n.continuation_field(3).n0, Vec3(0, 1, 0));  // none set at 3: its field
+    n.drop_continuation_fields();
+    EXPECT_EQ(n.continuation_field(1).n0, Vec3(0, 0, 1));
+    n.add(2);  // room made after the drop holds no continuation entry
+    EXPECT_TRUE(n.continuation_field(2).n0.isZero(0.0));
+}
+
 TEST(FeatureNormals, BandVerticesOfABoxGetTheirFacesExactNormal) {
     const test::SampledShape shape = test::sampled_box();
     const Classified c = classify(shape.mesh);

@@ -190,6 +190,7 @@ void classify_and_fit_normals(const Mesh& mesh, Detection& d, const RestoreOptio
                             d.features.vertex_patch, d.bands, options.normals);
         d.bands =
             drop_smooth_crossings(mesh, connectivity, d.bands, d.feature_normals, options.bands);
+        d.feature_normals.drop_continuation_fields();  // nothing after reads them
     });
 }
 
@@ -538,12 +539,12 @@ private:
             });
     }
 
-    /// Adapts the options to a mesh whose vertices lie as `choice` says: a flat strip of facets
-    /// tells a smooth surface's turn only where the vertices lie on the surface
-    /// (FeatureNormalOptions::fields_along_coplanar_strips).
+    /// Adapts the options to a mesh whose vertices lie as `choice` says: a flat strip of facets,
+    /// or a few faces around a vertex, tell a smooth surface's turn only where the vertices lie
+    /// on the surface (FeatureNormalOptions::vertices_on_surface).
     void adopt(const PlacementChoice& choice) {
         if (choice.placement != VertexPlacement::Exact) {
-            options_.normals.fields_along_coplanar_strips = false;
+            options_.normals.vertices_on_surface = false;
         }
     }
 

@@ -99,7 +99,7 @@ BandClassification drop_smooth_crossings(const Mesh& mesh, const Connectivity& c
     // The normal of v's side carried to x: a sharp edge's two sides keep their angle up to
     // the edge, one smooth surface's meet there.
     auto carried = [&](Index v, const Vec3& x) -> Vec3 {
-        const NormalField& field = normals.field(v);
+        const NormalField& field = normals.continuation_field(v);
         if (field.n0.isZero(0.0)) return normals.normal(v);
         return field.n0 + field.gradient * (x - mesh.positions[v]);
     };

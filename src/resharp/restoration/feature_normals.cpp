@@ -16,6 +16,14 @@
 namespace resharp {
 namespace {
 
+/// A vertex with fewer faces wholly on its feature around it (and around its neighbours on it)
+/// has its continuation field from the faces off the bands within kContinuationRings rings.
+/// Measured on grid-sampled cylinders, cones and tori of 3 to 5 h (tests/pipeline/
+/// smooth_solids_test.cpp): 8 faces left phantom points that 10 do not; 3 rings, where 2 see
+/// too few faces off the phantom bands of a small torus.
+constexpr std::size_t kFewOwnFaces = 10;
+constexpr int kContinuationRings = 3;
+
 void validate(const FeatureNormalOptions& o) {
     if (!(o.max_fit_correction_deg >= 0.0 && o.max_fit_correction_deg <= 180.0)) {
         throw InvalidInput("largest fit correction must lie in [0, 180] degrees");
@@ -117,6 +125,33 @@ void near_faces(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>
         [&](Index f) { return normals[f].dot(n) > min_cosine; }, out, taken);
 }
 
+/// The faces within kContinuationRings rings of vertices around v (one ring: v's own faces) that
+/// lie in no band and whose normals lie within the angle of `min_cosine` of n. Bound: the rings'
+/// faces, a few dozen; each is looked up in the list taken so far.
+void faces_off_bands_near(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>& normals,
+                          const std::vector<BandRole>& face_role, Index v, const Vec3& n,
+                          double min_cosine, std::vector<Index>& out, std::vector<Index>& ring) {
+    out.clear();
+    ring.assign(1, v);
+    std::size_t begin = 0;
+    for (int depth = 1; depth <= kContinuationRings; ++depth) {
+        const std::size_t end = ring.size();
+        for (std::size_t i = begin; i < end; ++i) {
+            for (Index f : c.faces_around(ring[i])) {
+                if (face_role[f] == BandRole::None && normals[f].dot(n) > min_cosine &&
+                    std::find(out.begin(), out.end(), f) == out.end()) {
+                    out.push_back(f);
+                }
+            }
+            if (depth == kContinuationRings) continue;
+            for_each_ring_vertex(mesh, c, ring[i], [&](Index q) {
+                if (std::find(ring.begin(), ring.end(), q) == ring.end()) ring.push_back(q);
+            });
+        }
+        begin = end;
+    }
+}
+
 /// The linear model of fit_normal_at: per face the row (1, u, w) of its centroid's offset from
 /// the vertex in a tangent frame, beside the face's normal.
 /// Kept by each worker and refilled per vertex, so that no vertex allocates.
@@ -164,6 +199,11 @@ std::optional<Eigen::Matrix3d> solve_fit(const FitSamples& s) {
     return Eigen::Matrix3d(ata.ldlt().solve(atb));
 }
 
+/// Whether the last fit_normal_at() left any face out.
+bool trimmed_any(const FitSamples& samples) {
+    return std::find(samples.use.begin(), samples.use.end(), 0) != samples.use.end();
+}
+
 /// Least-squares fit n(x) = n0 + a u + b w of the face normals over the faces' centroids, with
 /// (u, w) the centroid's offset from v in the tangent plane of `guess`, refitted once without
 /// the faces whose residual exceeds `max_residual` (radians, as a chord of unit normals);
@@ -195,10 +235,10 @@ std::optional<NormalField> fit_normal_at(const Mesh& mesh, const std::vector<Vec
 }
 
 struct FitLimits {
-    double min_cosine;    ///< of the largest correction of eq. 5.1's normal
-    double max_residual;  ///< chord between a face normal and the first fit
-    double near_cosine;   ///< of the widest angle to eq. 5.1's normal of near_faces()
-    bool strip_fields;    ///< FeatureNormalOptions::fields_along_coplanar_strips
+    double min_cosine;      ///< of the largest correction of eq. 5.1's normal
+    double max_residual;    ///< chord between a face normal and the first fit
+    double near_cosine;     ///< of the widest angle to eq. 5.1's normal of near_faces()
+    bool surface_vertices;  ///< FeatureNormalOptions::vertices_on_surface
 };
 
 /// What the fits read: the mesh, its face normals and the feature segmentation.
@@ -208,6 +248,7 @@ struct FitSource {
     const std::vector<Vec3>& normals;  ///< per face
     const std::vector<Index>& face_patch;
     const std::vector<Index>& vertex_patch;
+    const std::vector<BandRole>& face_role;
 };
 
 /// Buffers one worker reuses for every vertex.
@@ -260,26 +301,32 @@ std::optional<NormalField> field_of_near_faces(const FitSource& in, Index v, con
 
 /// Replaces eq. 5.1's normal n at v by the linear fit where the fit is well posed, not planar
 /// and corrects n by less than the limit; `correction` gets the angle (degrees) it moved n by
-/// and `field` the fit's field.
-void refine_by_fit(const FitSource& in, Index v, const FitLimits& limits, Vec3& n,
-                   float& correction, NormalField& field, FitScratch& scratch) {
+/// and `field` the fit's field. Where the trimmed fit is taken, `continuation` (if given) gets
+/// the fit of all the faces instead: the facets of a cylinder a few cells in radius turn by more
+/// than the trimming allows, and it can leave a single flat strip whose zero slope would tell
+/// drop_smooth_crossings() the feature is flat where it turns. Returns the number of v's own
+/// faces fitted (wholly on its feature).
+std::size_t refine_by_fit(const FitSource& in, Index v, const FitLimits& limits, Vec3& n,
+                          float& correction, NormalField& field, NormalField* continuation,
+                          FitScratch& scratch) {
     const Mesh& mesh = in.mesh;
     const std::vector<Vec3>& normals = in.normals;
     fit_faces(mesh, in.connectivity, in.face_patch, in.vertex_patch, v, scratch.faces,
               scratch.taken);
+    const std::size_t own_faces = scratch.faces.size();
     if (scratch.faces.empty()) {
         // No face around v lies wholly on its feature (a strip narrower than a face): only the
         // faces beside it can tell how the surface turns.
         if (auto near = field_of_near_faces(in, v, n, limits, scratch)) field = *near;
-        return;
+        return own_faces;
     }
     if (coplanar(normals, scratch.faces)) {
         // The feature is flat around v, but a strip of facets of a small cylinder is flat too:
         // the faces beside it tell how the surface turns (drop_smooth_crossings).
-        if (limits.strip_fields && along_one_strip(mesh, scratch.faces, n)) {
+        if (limits.surface_vertices && along_one_strip(mesh, scratch.faces, n)) {
             if (auto near = field_of_near_faces(in, v, n, limits, scratch)) field = *near;
         }
-        return;
+        return own_faces;
     }
     const auto fitted =
         fit_normal_at(mesh, normals, scratch.faces, v, n, limits.max_residual, scratch.samples);
@@ -287,7 +334,14 @@ void refine_by_fit(const FitSource& in, Index v, const FitLimits& limits, Vec3& 
         correction = static_cast<float>(angle_deg(fitted->n0, n));
         n = fitted->n0;
         field = *fitted;
-        return;
+        if (continuation && trimmed_any(scratch.samples)) {
+            const double all = std::numeric_limits<double>::infinity();
+            if (auto turning =
+                    fit_normal_at(mesh, normals, scratch.faces, v, n, all, scratch.samples)) {
+                *continuation = *turning;
+            }
+        }
+        return own_faces;
     }
     // Eq. 5.1's normal stays, but how the feature turns still tells one smooth surface from
     // two (drop_smooth_crossings): on coarse facets of a small radius the faces stray from any
@@ -300,6 +354,7 @@ void refine_by_fit(const FitSource& in, Index v, const FitLimits& limits, Vec3& 
         untrimmed = field_of_near_faces(in, v, n, limits, scratch);
     }
     if (untrimmed) field = *untrimmed;
+    return own_faces;
 }
 
 /// v's feature normal in `result`: eq. 5.1's over its own patch (over its same-patch
@@ -314,7 +369,21 @@ void set_feature_normal(const FitSource& in, Index v, bool linear_fit, const Fit
                                     in.vertex_patch, v);
     }
     if (linear_fit && !n.isZero(0.0)) {
-        refine_by_fit(in, v, limits, n, result.fit_correction_at(v), result.field_at(v), scratch);
+        NormalField* continuation =
+            limits.surface_vertices ? &result.continuation_field_at(v) : nullptr;
+        const std::size_t own_faces = refine_by_fit(in, v, limits, n, result.fit_correction_at(v),
+                                                    result.field_at(v), continuation, scratch);
+        if (continuation && own_faces < kFewOwnFaces) {
+            // Too few to tell how the feature turns (a small cylinder's facet strips, a
+            // torus's quads): the faces off the bands around v, its side of the band, tell.
+            faces_off_bands_near(in.mesh, in.connectivity, in.normals, in.face_role, v, n,
+                                 limits.near_cosine, scratch.faces, scratch.taken);
+            const double all = std::numeric_limits<double>::infinity();
+            if (auto turning =
+                    fit_normal_at(in.mesh, in.normals, scratch.faces, v, n, all, scratch.samples)) {
+                *continuation = *turning;
+            }
+        }
     }
     result.normal_at(v) = n;
 }
@@ -332,16 +401,18 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
     const FitLimits fit{std::cos(options.max_fit_correction_deg * degree),
                         2.0 * std::sin(options.max_fit_residual_deg * degree / 2.0),
                         std::cos(options.near_face_angle_deg * degree),
-                        options.fields_along_coplanar_strips};
+                        options.vertices_on_surface};
     std::vector<std::uint8_t> needed(mesh.vertex_count(), 0);
     for (Index f = 0; f < mesh.face_count(); ++f) {
         if (bands.face_role[f] == BandRole::None) continue;
         for (Index v : mesh.triangles[f]) needed[v] = 1;
     }
-    const FitSource source{mesh, connectivity, face_normals, face_patch, vertex_patch};
+    const FitSource source{mesh,       connectivity, face_normals,
+                           face_patch, vertex_patch, bands.face_role};
     const bool linear_fit = options.estimate == NormalEstimate::LinearFit;
     FeatureNormals result(mesh.vertex_count());
     if (linear_fit) result.keep_fields();
+    if (linear_fit && options.vertices_on_surface) result.keep_continuation_fields();
     for (Index v = 0; v < mesh.vertex_count(); ++v) {
         if (needed[v] && vertex_patch[v] != kNoIndex) result.add(v);
     }

@@ -37,13 +37,18 @@ struct FeatureNormalOptions {
     /// (degrees) of the vertex's eq. 5.1 normal. It only serves to tell one smooth surface from
     /// two (drop_smooth_crossings), not to place points.
     double near_face_angle_deg = 25.0;
-    /// Where the feature's own faces around a vertex are coplanar but lie along one strip (a
-    /// facet strip of a cylinder a few cells in radius, along a grid axis), that field too is
-    /// fitted to the faces near the vertex. Only for meshes whose vertices lie on the surface
-    /// (restore() turns it off on near-surface and midpoint meshes): there a coplanar strip is
-    /// a strip of one smooth surface, while on a surface-nets mesh the border of a wide
-    /// chamfer is such a strip too, and the faces near it would make its edge look smooth.
-    bool fields_along_coplanar_strips = true;
+    /// The mesh's vertices lie on the surface (exact crossings). Then a few faces around a
+    /// vertex are a coarse sampling of one surface, whose turn the faces beside them tell:
+    /// - where the feature's own faces around a vertex are coplanar but lie along one strip (a
+    ///   facet strip of a cylinder a few cells in radius, along a grid axis), that field too is
+    ///   fitted to the faces near the vertex;
+    /// - the continuation field (FeatureNormals::continuation_field) is kept apart from the
+    ///   field: where the vertex has fewer than ten faces of its own, that of the faces off the
+    ///   bands within three rings; where the fit's trimming left faces out, that of all of them.
+    /// restore() turns it off on near-surface and midpoint meshes: there a coplanar strip is not
+    /// always a strip of one smooth surface (on a surface-nets mesh the border of a wide chamfer
+    /// is one too), and the faces near it would make its edge look smooth.
+    bool vertices_on_surface = true;
 };
 
 /// A normal field about a vertex x_v: n(x) = n0 + gradient (x - x_v), n0 unit.
@@ -78,6 +83,15 @@ public:
         return has_slot(v) && !fields_.empty() ? fields_[slot_[v]] : kNone;
     }
 
+    /// The field drop_smooth_crossings() carries from v across a band: field(v) unless
+    /// feature_normals() kept one apart (FeatureNormalOptions::vertices_on_surface), where the
+    /// field that places v's normal cannot tell how its feature turns.
+    const NormalField& continuation_field(Index v) const {
+        if (has_slot(v) && !continuations_.empty() && !continuations_[slot_[v]].n0.isZero(0.0))
+            return continuations_[slot_[v]];
+        return field(v);
+    }
+
     /// Makes room for v's normal, zero, with no correction and no field, if it has none.
     void add(Index v) {
         if (has_slot(v)) return;
@@ -85,11 +99,23 @@ public:
         normals_.push_back(Vec3::Zero());
         corrections_.push_back(0.0f);
         if (with_fields_) fields_.emplace_back();
+        if (with_continuations_) continuations_.emplace_back();
     }
     /// Keeps a field for every vertex with a normal (LinearFit), from now on.
     void keep_fields() {
         with_fields_ = true;
         fields_.resize(normals_.size());
+    }
+    /// Keeps a continuation field apart from the field for every vertex with a normal, from
+    /// now on (none set: the field).
+    void keep_continuation_fields() {
+        with_continuations_ = true;
+        continuations_.resize(normals_.size());
+    }
+    /// Forgets the continuation fields (once drop_smooth_crossings() has read them).
+    void drop_continuation_fields() {
+        with_continuations_ = false;
+        continuations_ = {};
     }
     /// Takes v's field away (a zero field: none), if it has one.
     void drop_field(Index v) {
@@ -99,6 +125,7 @@ public:
     Vec3& normal_at(Index v) { return normals_[slot_[v]]; }
     float& fit_correction_at(Index v) { return corrections_[slot_[v]]; }
     NormalField& field_at(Index v) { return fields_[slot_[v]]; }
+    NormalField& continuation_field_at(Index v) { return continuations_[slot_[v]]; }
 
 private:
     bool has_slot(Index v) const { return !slot_.empty() && slot_[v] != kNoIndex; }
@@ -107,7 +134,10 @@ private:
     std::vector<Vec3> normals_;        ///< per entry
     std::vector<float> corrections_;   ///< per entry
     std::vector<NormalField> fields_;  ///< per entry with keep_fields(), else empty
+    /// per entry with keep_continuation_fields(), else empty; zero where field() serves
+    std::vector<NormalField> continuations_;
     bool with_fields_ = false;
+    bool with_continuations_ = false;
 };
 
 /// Per vertex (#V): at each vertex of an edge or corner triangle, N = sum(theta_i N_i) /
