@@ -127,29 +127,27 @@ void near_faces(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>
 
 /// The faces within kContinuationRings rings of vertices around v (one ring: v's own faces) that
 /// lie in no band and whose normals lie within the angle of `min_cosine` of n. Bound: the rings'
-/// faces, a few dozen; each is looked up in the list taken so far.
+/// vertices and faces, a few dozen, each sorted once.
 void faces_off_bands_near(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>& normals,
                           const std::vector<BandRole>& face_role, Index v, const Vec3& n,
                           double min_cosine, std::vector<Index>& out, std::vector<Index>& ring) {
-    out.clear();
-    ring.assign(1, v);
-    std::size_t begin = 0;
-    for (int depth = 1; depth <= kContinuationRings; ++depth) {
-        const std::size_t end = ring.size();
-        for (std::size_t i = begin; i < end; ++i) {
-            for (Index f : c.faces_around(ring[i])) {
-                if (face_role[f] == BandRole::None && normals[f].dot(n) > min_cosine &&
-                    std::find(out.begin(), out.end(), f) == out.end()) {
-                    out.push_back(f);
-                }
-            }
-            if (depth == kContinuationRings) continue;
-            for_each_ring_vertex(mesh, c, ring[i], [&](Index q) {
-                if (std::find(ring.begin(), ring.end(), q) == ring.end()) ring.push_back(q);
-            });
+    ring.assign(1, v);  // sorted, unique: the vertices within the rings walked so far
+    for (int depth = 1; depth < kContinuationRings; ++depth) {
+        const std::size_t walked = ring.size();
+        for (std::size_t i = 0; i < walked; ++i) {
+            for_each_ring_vertex(mesh, c, ring[i], [&](Index q) { ring.push_back(q); });
         }
-        begin = end;
+        std::sort(ring.begin(), ring.end());
+        ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
     }
+    out.clear();
+    for (Index q : ring) {
+        for (Index f : c.faces_around(q)) {
+            if (face_role[f] == BandRole::None && normals[f].dot(n) > min_cosine) out.push_back(f);
+        }
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
 /// The linear model of fit_normal_at: per face the row (1, u, w) of its centroid's offset from
@@ -199,19 +197,29 @@ std::optional<Eigen::Matrix3d> solve_fit(const FitSamples& s) {
     return Eigen::Matrix3d(ata.ldlt().solve(atb));
 }
 
-/// Whether the last fit_normal_at() left any face out.
-bool trimmed_any(const FitSamples& samples) {
-    return std::find(samples.use.begin(), samples.use.end(), 0) != samples.use.end();
+/// The field of solve_fit()'s coefficients in the tangent frame of `guess`, n0 made unit;
+/// nullopt where they are not finite or n0 is zero.
+std::optional<NormalField> field_of_fit(const Eigen::Matrix3d& fit, const Vec3& guess) {
+    const Vec3 n0 = fit.row(0).transpose();
+    if (!n0.allFinite() || n0.isZero(0.0) || !fit.allFinite()) return std::nullopt;
+    const Vec3 t1 = guess.unitOrthogonal();  // the tangent frame of fill_samples
+    const Vec3 t2 = guess.cross(t1);
+    const double length = n0.norm();
+    return NormalField{n0 / length, (fit.row(1).transpose() * t1.transpose() +
+                                     fit.row(2).transpose() * t2.transpose()) /
+                                        length};
 }
 
 /// Least-squares fit n(x) = n0 + a u + b w of the face normals over the faces' centroids, with
 /// (u, w) the centroid's offset from v in the tangent plane of `guess`, refitted once without
 /// the faces whose residual exceeds `max_residual` (radians, as a chord of unit normals);
 /// returns the field with n0, the fitted normal at v, made unit, or nullopt when the centroids
-/// do not span the plane.
+/// do not span the plane. Where the refit left faces out, `untrimmed` (if given) gets the first
+/// fit's field, of all of them (or none).
 std::optional<NormalField> fit_normal_at(const Mesh& mesh, const std::vector<Vec3>& normals,
                                          std::span<const Index> faces, Index v, const Vec3& guess,
-                                         double max_residual, FitSamples& samples) {
+                                         double max_residual, FitSamples& samples,
+                                         std::optional<NormalField>* untrimmed = nullptr) {
     fill_samples(mesh, normals, faces, v, guess, samples);
     const double max_residual2 = max_residual * max_residual;
     std::optional<Eigen::Matrix3d> fit = solve_fit(samples);
@@ -222,16 +230,11 @@ std::optional<NormalField> fit_normal_at(const Mesh& mesh, const std::vector<Vec
         samples.use[i] = (predicted - samples.normals[i]).squaredNorm() <= max_residual2;
         trimmed = trimmed || !samples.use[i];
     }
-    if (trimmed) fit = solve_fit(samples);
+    if (!trimmed) return field_of_fit(*fit, guess);
+    if (untrimmed) *untrimmed = field_of_fit(*fit, guess);
+    fit = solve_fit(samples);
     if (!fit) return std::nullopt;
-    const Vec3 n0 = fit->row(0).transpose();
-    if (!n0.allFinite() || n0.isZero(0.0) || !fit->allFinite()) return std::nullopt;
-    const Vec3 t1 = guess.unitOrthogonal();  // the tangent frame of fill_samples
-    const Vec3 t2 = guess.cross(t1);
-    const double length = n0.norm();
-    return NormalField{n0 / length, (fit->row(1).transpose() * t1.transpose() +
-                                     fit->row(2).transpose() * t2.transpose()) /
-                                        length};
+    return field_of_fit(*fit, guess);
 }
 
 struct FitLimits {
@@ -328,19 +331,14 @@ std::size_t refine_by_fit(const FitSource& in, Index v, const FitLimits& limits,
         }
         return own_faces;
     }
-    const auto fitted =
-        fit_normal_at(mesh, normals, scratch.faces, v, n, limits.max_residual, scratch.samples);
+    std::optional<NormalField> untrimmed_first;
+    const auto fitted = fit_normal_at(mesh, normals, scratch.faces, v, n, limits.max_residual,
+                                      scratch.samples, continuation ? &untrimmed_first : nullptr);
     if (fitted && fitted->n0.dot(n) > limits.min_cosine) {
         correction = static_cast<float>(angle_deg(fitted->n0, n));
         n = fitted->n0;
         field = *fitted;
-        if (continuation && trimmed_any(scratch.samples)) {
-            const double all = std::numeric_limits<double>::infinity();
-            if (auto turning =
-                    fit_normal_at(mesh, normals, scratch.faces, v, n, all, scratch.samples)) {
-                *continuation = *turning;
-            }
-        }
+        if (untrimmed_first) *continuation = *untrimmed_first;
         return own_faces;
     }
     // Eq. 5.1's normal stays, but how the feature turns still tells one smooth surface from
@@ -360,8 +358,8 @@ std::size_t refine_by_fit(const FitSource& in, Index v, const FitLimits& limits,
 /// v's feature normal in `result`: eq. 5.1's over its own patch (over its same-patch
 /// neighbours' where that has none), replaced by the linear fit (`linear_fit`) as
 /// refine_by_fit() decides, with the fit's correction and field.
-void set_feature_normal(const FitSource& in, Index v, bool linear_fit, const FitLimits& limits,
-                        FeatureNormals& result, FitScratch& scratch) {
+void set_feature_normal(const FitSource& in, Index v, bool linear_fit, bool crossing_end,
+                        const FitLimits& limits, FeatureNormals& result, FitScratch& scratch) {
     Vec3 n =
         own_patch_normal(in.mesh, in.connectivity, in.normals, in.face_patch, in.vertex_patch, v);
     if (n.isZero(0.0)) {
@@ -369,8 +367,9 @@ void set_feature_normal(const FitSource& in, Index v, bool linear_fit, const Fit
                                     in.vertex_patch, v);
     }
     if (linear_fit && !n.isZero(0.0)) {
+        // Only drop_smooth_crossings() reads it, at the ends of crossing edges.
         NormalField* continuation =
-            limits.surface_vertices ? &result.continuation_field_at(v) : nullptr;
+            limits.surface_vertices && crossing_end ? &result.continuation_field_at(v) : nullptr;
         const std::size_t own_faces = refine_by_fit(in, v, limits, n, result.fit_correction_at(v),
                                                     result.field_at(v), continuation, scratch);
         if (continuation && own_faces < kFewOwnFaces) {
@@ -402,10 +401,17 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
                         2.0 * std::sin(options.max_fit_residual_deg * degree / 2.0),
                         std::cos(options.near_face_angle_deg * degree),
                         options.vertices_on_surface};
+    // Per vertex: kNeeded on a band face, kCrossingEnd also at an end of a crossing edge.
+    constexpr std::uint8_t kNeeded = 1, kCrossingEnd = 2;
     std::vector<std::uint8_t> needed(mesh.vertex_count(), 0);
     for (Index f = 0; f < mesh.face_count(); ++f) {
         if (bands.face_role[f] == BandRole::None) continue;
-        for (Index v : mesh.triangles[f]) needed[v] = 1;
+        const Triangle& t = mesh.triangles[f];
+        for (Index k = 0; k < 3; ++k) {
+            const std::uint8_t end = bands.is_crossing[3 * f + k] ? kCrossingEnd : kNeeded;
+            needed[t[k]] = std::max(needed[t[k]], end);
+            needed[t[(k + 1) % 3]] = std::max(needed[t[(k + 1) % 3]], end);
+        }
     }
     const FitSource source{mesh,       connectivity, face_normals,
                            face_patch, vertex_patch, bands.face_role};
@@ -413,6 +419,11 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
     FeatureNormals result(mesh.vertex_count());
     if (linear_fit) result.keep_fields();
     if (linear_fit && options.vertices_on_surface) result.keep_continuation_fields();
+    std::size_t entries = 0;
+    for (Index v = 0; v < mesh.vertex_count(); ++v) {
+        entries += needed[v] && vertex_patch[v] != kNoIndex;
+    }
+    result.reserve(entries);
     for (Index v = 0; v < mesh.vertex_count(); ++v) {
         if (needed[v] && vertex_patch[v] != kNoIndex) result.add(v);
     }
@@ -421,7 +432,8 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
         FitScratch scratch;
         for (Index v = range.begin(); v != range.end(); ++v) {
             if (needed[v] && vertex_patch[v] != kNoIndex) {
-                set_feature_normal(source, v, linear_fit, fit, result, scratch);
+                set_feature_normal(source, v, linear_fit, needed[v] == kCrossingEnd, fit, result,
+                                   scratch);
             }
         }
     });

@@ -92,6 +92,15 @@ public:
         return field(v);
     }
 
+    /// Makes room for `entries` vertices' normals (and fields, as kept) without moving them
+    /// as add() makes room one by one.
+    void reserve(std::size_t entries) {
+        normals_.reserve(entries);
+        corrections_.reserve(entries);
+        if (with_fields_) fields_.reserve(entries);
+        if (with_continuations_) continuations_.reserve(entries);
+    }
+
     /// Makes room for v's normal, zero, with no correction and no field, if it has none.
     void add(Index v) {
         if (has_slot(v)) return;
