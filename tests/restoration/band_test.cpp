@@ -242,6 +242,7 @@ TEST(FeatureNormals, FitLeavesOutFacesBeyondACreaseInsideThePatch) {
     const Connectivity connectivity = build_connectivity(mesh);
     const std::vector<Index> face_patch(mesh.face_count(), 0), vertex_patch(mesh.vertex_count(), 0);
     BandClassification bands;
+    bands.is_crossing.assign(3 * mesh.face_count(), 0);
     bands.face_role.assign(mesh.face_count(), BandRole::None);
     for (Index f : connectivity.faces_around(sheet.centre)) bands.face_role[f] = BandRole::Edge;
     auto normal_at_centre = [&](double max_residual_deg) {
@@ -259,7 +260,8 @@ TEST(FeatureNormals, RejectsAnglesOutsideTheHalfTurn) {
     const Connectivity connectivity = build_connectivity(sheet.mesh);
     const std::vector<Index> patch_of_faces(sheet.mesh.face_count(), 0);
     const std::vector<Index> patch_of_vertices(sheet.mesh.vertex_count(), 0);
-    const BandClassification bands{{}, std::vector<BandRole>(sheet.mesh.face_count()), 0, 0, 0};
+    const BandClassification bands{std::vector<std::uint8_t>(3 * sheet.mesh.face_count()),
+                                   std::vector<BandRole>(sheet.mesh.face_count()), 0, 0, 0};
     for (double bad : {-1.0, 181.0, std::numeric_limits<double>::quiet_NaN()}) {
         EXPECT_THROW(
             feature_normals(sheet.mesh, connectivity, face_normals(sheet.mesh), patch_of_faces,

@@ -10,6 +10,7 @@
 #include <optional>
 #include <span>
 
+#include "resharp/core/assert.h"
 #include "resharp/core/errors.h"
 #include "resharp/mesh/geometry.h"
 
@@ -396,6 +397,8 @@ FeatureNormals feature_normals(const Mesh& mesh, const Connectivity& connectivit
                                const BandClassification& bands,
                                const FeatureNormalOptions& options) {
     validate(options);
+    RESHARP_ASSERT(bands.is_crossing.size() == 3 * mesh.face_count() &&
+                   bands.face_role.size() == mesh.face_count());
     const double degree = std::numbers::pi / 180.0;
     const FitLimits fit{std::cos(options.max_fit_correction_deg * degree),
                         2.0 * std::sin(options.max_fit_residual_deg * degree / 2.0),
