@@ -46,6 +46,9 @@ CAUSES = ["beyond_chord", "no_feature_patch", "same_patch", "no_edge_vertex", "c
 # The section bench/cad_corpus.py writes into the page; kept when this script rewrites it.
 CAD_BEGIN = "<!-- cad-corpus: begin (bench/cad_corpus.py writes this section) -->"
 CAD_END = "<!-- cad-corpus: end -->"
+# Written by hand from scratch counts on single rows; kept as it is, like the sections above.
+CAD_DIAGNOSIS_BEGIN = "<!-- cad-diagnosis: begin (written by hand; kept by bench/results.py) -->"
+CAD_DIAGNOSIS_END = "<!-- cad-diagnosis: end -->"
 
 
 # The sections bench/mesher_results.py writes, one per mesher (openvdb: OpenVDB's volumeToMesh,
@@ -73,8 +76,8 @@ def cad_section(page):
 
 def kept_sections(page):
     """The sections other scripts write into `page`, in page order, as one text."""
-    sections = [cad_section(page)] + [marked_section(page, *mesher_markers(m))
-                                      for m in MESHER_SECTIONS]
+    sections = [cad_section(page), marked_section(page, CAD_DIAGNOSIS_BEGIN, CAD_DIAGNOSIS_END)]
+    sections += [marked_section(page, *mesher_markers(m)) for m in MESHER_SECTIONS]
     return "\n\n".join(sorted((s for s in sections if s), key=page.index))
 
 
