@@ -128,7 +128,7 @@ void near_faces(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>
 
 /// The faces within kContinuationRings rings of vertices around v (one ring: v's own faces) that
 /// lie in no band and whose normals lie within the angle of `min_cosine` of n. Bound: the rings'
-/// vertices and faces, a few dozen, each sorted once.
+/// vertices and faces, a few dozen; the vertices sorted once per ring, the faces once.
 void faces_off_bands_near(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>& normals,
                           const std::vector<BandRole>& face_role, Index v, const Vec3& n,
                           double min_cosine, std::vector<Index>& out, std::vector<Index>& ring) {
