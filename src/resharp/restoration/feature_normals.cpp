@@ -215,24 +215,24 @@ std::optional<NormalField> field_of_fit(const Eigen::Matrix3d& fit, const Vec3& 
 /// (u, w) the centroid's offset from v in the tangent plane of `guess`, refitted once without
 /// the faces whose residual exceeds `max_residual` (radians, as a chord of unit normals);
 /// returns the field with n0, the fitted normal at v, made unit, or nullopt when the centroids
-/// do not span the plane. Where the refit left faces out, `untrimmed` (if given) gets the first
-/// fit's field, of all of them (or none).
+/// do not span the plane. `all_faces` (if given) gets the first fit's field, of all the faces
+/// (nullopt likewise): what a fit without trimming would return.
 std::optional<NormalField> fit_normal_at(const Mesh& mesh, const std::vector<Vec3>& normals,
                                          std::span<const Index> faces, Index v, const Vec3& guess,
                                          double max_residual, FitSamples& samples,
-                                         std::optional<NormalField>* untrimmed = nullptr) {
+                                         std::optional<NormalField>* all_faces = nullptr) {
     fill_samples(mesh, normals, faces, v, guess, samples);
     const double max_residual2 = max_residual * max_residual;
     std::optional<Eigen::Matrix3d> fit = solve_fit(samples);
     if (!fit) return std::nullopt;
+    if (all_faces) *all_faces = field_of_fit(*fit, guess);
     bool trimmed = false;
     for (std::size_t i = 0; i < faces.size(); ++i) {
         const Vec3 predicted = fit->transpose() * samples.rows[i];
         samples.use[i] = (predicted - samples.normals[i]).squaredNorm() <= max_residual2;
         trimmed = trimmed || !samples.use[i];
     }
-    if (!trimmed) return field_of_fit(*fit, guess);
-    if (untrimmed) *untrimmed = field_of_fit(*fit, guess);
+    if (!trimmed) return all_faces ? *all_faces : field_of_fit(*fit, guess);
     fit = solve_fit(samples);
     if (!fit) return std::nullopt;
     return field_of_fit(*fit, guess);
@@ -303,6 +303,16 @@ std::optional<NormalField> field_of_near_faces(const FitSource& in, Index v, con
                          std::numeric_limits<double>::infinity(), scratch.samples);
 }
 
+/// The field of the faces off the bands within kContinuationRings rings of v whose normals lie
+/// near n (limits.near_cosine); nullopt where their centroids do not span a plane.
+std::optional<NormalField> field_of_faces_off_bands(const FitSource& in, Index v, const Vec3& n,
+                                                    const FitLimits& limits, FitScratch& scratch) {
+    faces_off_bands_near(in.mesh, in.connectivity, in.normals, in.face_role, v, n,
+                         limits.near_cosine, scratch.faces, scratch.taken);
+    return fit_normal_at(in.mesh, in.normals, scratch.faces, v, n,
+                         std::numeric_limits<double>::infinity(), scratch.samples);
+}
+
 /// Replaces eq. 5.1's normal n at v by the linear fit where the fit is well posed, not planar
 /// and corrects n by less than the limit; `correction` gets the angle (degrees) it moved n by
 /// and `field` the fit's field. Where the trimmed fit is taken, `continuation` (if given) gets
@@ -332,21 +342,20 @@ std::size_t refine_by_fit(const FitSource& in, Index v, const FitLimits& limits,
         }
         return own_faces;
     }
-    std::optional<NormalField> untrimmed_first;
+    std::optional<NormalField> untrimmed;
     const auto fitted = fit_normal_at(mesh, normals, scratch.faces, v, n, limits.max_residual,
-                                      scratch.samples, continuation ? &untrimmed_first : nullptr);
+                                      scratch.samples, &untrimmed);
     if (fitted && fitted->n0.dot(n) > limits.min_cosine) {
         correction = static_cast<float>(angle_deg(fitted->n0, n));
         n = fitted->n0;
         field = *fitted;
-        if (untrimmed_first) *continuation = *untrimmed_first;
+        // (the field itself where the trimming left no face out)
+        if (continuation && untrimmed) *continuation = *untrimmed;
         return own_faces;
     }
     // Eq. 5.1's normal stays, but how the feature turns still tells one smooth surface from
     // two (drop_smooth_crossings): on coarse facets of a small radius the faces stray from any
     // linear field by more than the trimming allows, so that field comes from all of them.
-    const double all = std::numeric_limits<double>::infinity();
-    auto untrimmed = fit_normal_at(mesh, normals, scratch.faces, v, n, all, scratch.samples);
     if (!untrimmed) {
         // A patch one strip of facets wide (a cylinder a few cells in radius, along a grid
         // axis) cannot tell the slope across it: the faces near v that lie near its normal can.
@@ -376,11 +385,7 @@ void set_feature_normal(const FitSource& in, Index v, bool linear_fit, bool cros
         if (continuation && own_faces < kFewOwnFaces) {
             // Too few to tell how the feature turns (a small cylinder's facet strips, a
             // torus's quads): the faces off the bands around v, its side of the band, tell.
-            faces_off_bands_near(in.mesh, in.connectivity, in.normals, in.face_role, v, n,
-                                 limits.near_cosine, scratch.faces, scratch.taken);
-            const double all = std::numeric_limits<double>::infinity();
-            if (auto turning =
-                    fit_normal_at(in.mesh, in.normals, scratch.faces, v, n, all, scratch.samples)) {
+            if (auto turning = field_of_faces_off_bands(in, v, n, limits, scratch)) {
                 *continuation = *turning;
             }
         }
