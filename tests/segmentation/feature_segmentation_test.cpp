@@ -11,6 +11,7 @@
 #include "resharp/core/errors.h"
 #include "resharp/mesh/geometry.h"
 #include "resharp/segmentation/edge_segmentation.h"
+#include "resharp/sim/csg.h"
 #include "resharp/sim/marching_cubes.h"
 #include "resharp/sim/solids.h"
 #include "resharp/sim/tridexel.h"
@@ -195,6 +196,47 @@ TEST(FeatureSegmentation, LabelsAVertexOfARowThatGrewIntoTheOtherPatchByItsOwnSu
     }
     ASSERT_EQ(chamfer_patches.size(), 1u);
     EXPECT_NE(*chamfer_patches.begin(), top);
+}
+
+/// A block 20 x 20 x 8 with a blind counterbore of radius 5 and depth 3.75 along z, on a unit
+/// grid whose lines keep off its faces: the counterbore of plate_holes_bosses at 100 cells.
+TEST(FeatureSegmentation, JoinsTheColumnsOfACounterboresShortWallIntoFeaturePatches) {
+    const sim::CsgNode block{.shape = sim::BoxShape{Vec3::Zero(), Vec3(20.0, 20.0, 8.0)}};
+    const sim::CsgNode bore{.shape = sim::ConeShape{4.75, 5.0, 5.0},
+                            .placement = {Eigen::Matrix3d::Identity(), Vec3(10.0, 10.0, 4.25)}};
+    const sim::CsgSolid solid(
+        sim::CsgNode{.op = sim::CsgOp::Difference, .operands = {block, bore}});
+    const sim::OracleMesh meshed =
+        sim::mesh_dexels(sim::sample_solid(sim::phased_grid(solid.bounds(), 1.0, 0.37), solid));
+    const auto wall_id = static_cast<std::int32_t>(std::distance(
+        solid.surfaces().begin(),
+        std::find_if(solid.surfaces().begin(), solid.surfaces().end(),
+                     [](const sim::CsgSurface& s) { return s.kind == sim::SurfaceKind::Cone; })));
+    const FeatureSegmentation s = segment(meshed.mesh);
+    auto wall_corners = [&](Index f) {
+        const Triangle& t = meshed.mesh.triangles[f];
+        return std::count_if(t.begin(), t.end(),
+                             [&](Index v) { return meshed.surface_ids[v] == wall_id; });
+    };
+    auto on_wall = [&](Index f) { return wall_corners(f) == 3; };
+    std::size_t wall_faces = 0, in_patches = 0;
+    std::set<Index> wall_patches;
+    for (Index f = 0; f < meshed.mesh.face_count(); ++f) {
+        if (!on_wall(f)) continue;
+        ++wall_faces;
+        if (s.face_patch[f] == kNoIndex) continue;
+        ++in_patches;
+        wall_patches.insert(s.face_patch[f]);
+    }
+    // Its columns of facets turn by more than the growth angle and are each a tiny patch, with
+    // no feature of their surface to join: without the joining every one is band. Columns one
+    // cell wide, their vertices all edge vertices, are bands from the start and part the wall
+    // into arcs.
+    EXPECT_GE(s.tiny_joined, 1u);
+    EXPECT_GE(in_patches, wall_faces * 3 / 4);
+    for (Index f = 0; f < meshed.mesh.face_count(); ++f) {
+        if (wall_corners(f) == 0) EXPECT_EQ(wall_patches.count(s.face_patch[f]), 0u) << f;
+    }
 }
 
 }  // namespace

@@ -52,6 +52,7 @@ struct RestoreReport {
     std::size_t grown_patches = 0;    ///< straight out of region growing
     std::size_t band_patches = 0;     ///< grown patches recognised as chamfer bands
     std::size_t tiny_patches_absorbed = 0;
+    std::size_t tiny_patches_joined = 0;  ///< sets of tiny patches become one small surface
     std::size_t patch_merges = 0;
 
     std::size_t crossing_edges = 0;

@@ -43,6 +43,7 @@ nlohmann::json report_to_json(const RestoreReport& r) {
           {"grown_patches", r.grown_patches},
           {"band_patches", r.band_patches},
           {"tiny_patches_absorbed", r.tiny_patches_absorbed},
+          {"tiny_patches_joined", r.tiny_patches_joined},
           {"merges", r.patch_merges}}},
         {"classification",
          {{"crossing_edges", r.crossing_edges},

@@ -736,6 +736,7 @@ private:
         report_.grown_patches = f.grown_patches;
         report_.band_patches = f.band_patches;
         report_.tiny_patches_absorbed = f.tiny_absorbed;
+        report_.tiny_patches_joined = f.tiny_joined;
         report_.patch_merges = f.merges;
         report_.crossing_edges = d.bands.crossing_edges;
         report_.edge_triangles = d.bands.edge_triangles;

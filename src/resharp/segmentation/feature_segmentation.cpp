@@ -322,6 +322,15 @@ std::vector<PatchRole> assign_roles(const PatchCensus& census,
     return role;
 }
 
+std::vector<Index> faces_of_tiny_patches(const std::vector<Index>& region,
+                                         const std::vector<PatchRole>& role) {
+    std::vector<Index> faces;
+    for (Index f = 0; f < region.size(); ++f) {
+        if (role[region[f]] == PatchRole::Tiny) faces.push_back(f);
+    }
+    return faces;
+}
+
 /// How a tiny patch touches one feature patch: shared edges and the summed cosine of the angle
 /// between the face normals across them.
 struct Contact {
@@ -376,7 +385,7 @@ Index absorbing_patch(const std::vector<Contact>& contacts, double min_mean_cosi
 
 /// §4: a tiny patch moves into the neighbouring feature patch of the same surface (the one it
 /// shares most edges with among those whose normals agree across the border); a tiny patch with
-/// no such neighbour lies within an edge region and becomes band. Without the agreement test a
+/// no such neighbour is left tiny (join_tiny_leftovers() decides it). Without the agreement test a
 /// tiny piece of a curved wall would join the flat face above it through a corner of the band,
 /// and merging would then pour the whole wall into that face. Repeated so that clusters of tiny
 /// patches drain into their feature neighbour from the outside in.
@@ -386,16 +395,13 @@ constexpr int kMaxAbsorbPasses = 64;
 std::size_t absorb_tiny(const Connectivity& c, const std::vector<Vec3>& normals,
                         double max_angle_deg, std::vector<Index>& region,
                         std::vector<PatchRole>& role) {
-    std::vector<Index> tiny_faces;
-    for (Index f = 0; f < region.size(); ++f) {
-        if (role[region[f]] == PatchRole::Tiny) tiny_faces.push_back(f);
-    }
+    const std::vector<Index> tiny_faces = faces_of_tiny_patches(region, role);
     const double min_mean_cosine = std::cos(max_angle_deg * kDegree);
     std::size_t absorbed = 0;
     bool changed = true;
     // Bound: each pass that changes anything empties at least one tiny patch for good, and at
     // most kMaxAbsorbPasses passes run, each linear in the tiny faces; patches deeper inside a
-    // cluster than that stay bands (below), as patches with no feature neighbour do.
+    // cluster than that are left over, as patches with no feature neighbour are.
     for (int pass = 0; changed && pass < kMaxAbsorbPasses; ++pass) {
         changed = false;
         const auto contacts = tiny_contacts(c, normals, region, role, tiny_faces);
@@ -413,10 +419,86 @@ std::size_t absorb_tiny(const Connectivity& c, const std::vector<Vec3>& normals,
             changed = true;
         }
     }
-    for (PatchRole& r : role) {
-        if (r == PatchRole::Tiny) r = PatchRole::Band;  // no feature neighbour: an edge region
-    }
     return absorbed;
+}
+
+/// Sets of the tiny patches absorb_tiny() left (no feature neighbour of their surface), joined
+/// across edges whose faces' normals agree within the merge angle.
+struct TinySets {
+    DisjointSets sets;
+    std::vector<std::size_t> faces;  ///< per set root: its faces
+};
+
+TinySets join_across_smooth_edges(const Connectivity& c, const std::vector<Vec3>& normals,
+                                  double max_angle_deg, const std::vector<Index>& region,
+                                  const std::vector<PatchRole>& role,
+                                  const std::vector<Index>& tiny_faces) {
+    TinySets t{DisjointSets(role.size()), std::vector<std::size_t>(role.size(), 0)};
+    const double min_cosine = std::cos(max_angle_deg * kDegree);
+    for (Index f : tiny_faces) {
+        for (Index k = 0; k < 3; ++k) {
+            const Index twin = c.twin[3 * f + k];
+            if (twin == kNoIndex) continue;
+            const Index g = face_of(twin);
+            if (role[region[g]] == PatchRole::Tiny && normals[f].dot(normals[g]) > min_cosine) {
+                t.sets.unite(region[f], region[g]);
+            }
+        }
+    }
+    for (Index f : tiny_faces) ++t.faces[t.sets.find(region[f])];
+    return t;
+}
+
+/// Per set root: whether the set meets another set of at least `min_faces` faces.
+std::vector<std::uint8_t> meets_another_large_set(const Connectivity& c,
+                                                  const std::vector<Index>& region,
+                                                  const std::vector<PatchRole>& role,
+                                                  const std::vector<Index>& tiny_faces,
+                                                  std::size_t min_faces, TinySets& t) {
+    std::vector<std::uint8_t> meets(role.size(), 0);
+    for (Index f : tiny_faces) {
+        for (Index k = 0; k < 3; ++k) {
+            const Index twin = c.twin[3 * f + k];
+            if (twin == kNoIndex || role[region[face_of(twin)]] != PatchRole::Tiny) continue;
+            const Index mine = t.sets.find(region[f]);
+            const Index theirs = t.sets.find(region[face_of(twin)]);
+            if (mine != theirs && t.faces[theirs] >= min_faces) meets[mine] = 1;
+        }
+    }
+    return meets;
+}
+
+/// The tiny patches absorb_tiny() left lie within edge regions and become band, but for a small
+/// surface of its own that region growing cut into pieces: a counterbore's wall a few cells
+/// high and a few in radius, whose columns of facets turn by more than the growth angle and each
+/// hold fewer faces than a tiny patch, between faces it meets at a sharp edge (plate_holes_bosses
+/// at 100 cells: the counterbore was one band with no crossing edge). Such pieces join, across
+/// edges whose normals agree within the merge angle, into a set of at least `min_faces` faces
+/// that meets no other such set, and the set becomes one feature patch. Where two large sets
+/// meet, they are one smooth surface whose facets turn too sharply in places to join (the torus
+/// of 3 h aligned: its tube in sets, with crossing edges and five phantom points between them),
+/// and stay band. Returns the sets made feature patches.
+std::size_t join_tiny_leftovers(const Connectivity& c, const std::vector<Vec3>& normals,
+                                double max_angle_deg, std::size_t min_faces,
+                                std::vector<Index>& region, std::vector<PatchRole>& role) {
+    const std::vector<Index> tiny_faces = faces_of_tiny_patches(region, role);
+    TinySets t = join_across_smooth_edges(c, normals, max_angle_deg, region, role, tiny_faces);
+    const std::vector<std::uint8_t> crowded =
+        meets_another_large_set(c, region, role, tiny_faces, min_faces, t);
+    auto own_surface = [&](Index root) { return t.faces[root] >= min_faces && !crowded[root]; };
+    for (Index f : tiny_faces) {
+        const Index root = t.sets.find(region[f]);
+        if (own_surface(root)) region[f] = root;
+    }
+    std::size_t joined = 0;
+    for (Index p = 0; p < role.size(); ++p) {
+        if (role[p] != PatchRole::Tiny) continue;
+        const Index root = t.sets.find(p);
+        const bool feature = root == p && own_surface(root);
+        role[p] = feature ? PatchRole::Feature : PatchRole::Band;  // emptied, or an edge region
+        joined += feature;
+    }
+    return joined;
 }
 
 /// Border of two patches: (median -cosine of the angle between them, lower id, higher id).
@@ -781,6 +863,8 @@ FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& conne
         static_cast<std::size_t>(std::count(role.begin(), role.end(), PatchRole::Band));
     s.tiny_absorbed =
         absorb_tiny(connectivity, face_normals, options.merge_angle_deg, region, role);
+    s.tiny_joined = join_tiny_leftovers(connectivity, face_normals, options.merge_angle_deg,
+                                        options.tiny_patch_faces, region, role);
 
     for (Index& r : region) {
         if (role[r] == PatchRole::Band) r = kNoIndex;

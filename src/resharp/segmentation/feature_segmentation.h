@@ -1,7 +1,8 @@
 #pragma once
 /// Feature-based segmentation (paper §4): faces are grown into patches of similar normal, the
 /// one-triangle-wide chamfer bands are set apart as edge regions (the paper's combination with
-/// the edge-based result), tiny patches are absorbed, over-segmented patches are merged
+/// the edge-based result), tiny patches are absorbed (or, left over, joined into a small surface
+/// of their own), over-segmented patches are merged
 /// greedily, and every vertex joins the patch with the most faces in its one-ring.
 
 #include <cstdint>
@@ -57,7 +58,10 @@ struct FeatureSegmentation {
     std::size_t grown_patches = 0;  ///< patches straight out of region growing
     std::size_t band_patches = 0;   ///< grown patches recognised as chamfer bands
     std::size_t tiny_absorbed = 0;  ///< tiny patches absorbed by a neighbour
-    std::size_t merges = 0;         ///< greedy merges of over-segmented patches
+    /// Sets of tiny patches left without a feature neighbour that joined into a feature patch:
+    /// a small surface of their own (a counterbore's wall a few cells high).
+    std::size_t tiny_joined = 0;
+    std::size_t merges = 0;  ///< greedy merges of over-segmented patches
 };
 
 /// Mean of the unit normals of v's ring faces in patch p (face_patch, #F), leaving out faces that
@@ -85,7 +89,7 @@ GrownRegions grow_feature_regions(const Mesh& mesh, const Connectivity& connecti
 
 /// Takes the mesh, its connectivity, unit face normals (#F), the regions grow_feature_regions()
 /// gave for them with the same options, and the edge-vertex labels of segment_edges (#V);
-/// gives the patches: bands set apart, tiny patches absorbed, the rest merged, vertices
+/// gives the patches: bands set apart, tiny patches absorbed or joined, the rest merged, vertices
 /// labelled.
 /// \throws InvalidInput if an option is out of range, or the regions are not one per face of
 /// this mesh, each below their count.
