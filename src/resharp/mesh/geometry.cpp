@@ -68,31 +68,33 @@ SurfaceNormals surface_normals(const Mesh& mesh, const Connectivity& connectivit
     return n;
 }
 
-namespace {
-
-/// Per face (#F): whether a corner of the face is flagged in `moved` (#V).
-std::vector<std::uint8_t> faces_with_moved_corner(const Mesh& mesh,
-                                                  const Connectivity& connectivity,
-                                                  std::span<const std::uint8_t> moved) {
-    std::vector<std::uint8_t> changed(mesh.face_count(), 0);
+std::vector<Index> faces_with_moved_corner(const Mesh& mesh, const Connectivity& connectivity,
+                                           std::span<const std::uint8_t> moved,
+                                           std::span<const Index> also) {
+    std::vector<std::uint8_t> flagged(mesh.face_count(), 0);
     for (Index v = 0; v < moved.size(); ++v) {
         if (!moved[v]) continue;
-        for (Index f : connectivity.faces_around(v)) changed[f] = 1;
+        for (Index f : connectivity.faces_around(v)) flagged[f] = 1;
     }
-    return changed;
+    for (Index f : also) flagged[f] = 1;
+    std::vector<Index> faces;
+    for (Index f = 0; f < flagged.size(); ++f) {
+        if (flagged[f]) faces.push_back(f);
+    }
+    return faces;
 }
 
-/// `unmoved` with the vertex normals of the corners of the faces flagged in `face_changed`
-/// computed again, each summing its ring's area vectors in ring order, as surface_normals()
-/// does: the same bits.
+namespace {
+
+/// `unmoved` with the vertex normals of the corners of `changed` (faces) computed again, each
+/// summing its ring's area vectors in ring order, as surface_normals() does: the same bits.
 std::vector<Vec3> vertex_normals_of_changed_faces(const Mesh& mesh,
                                                   const Connectivity& connectivity,
                                                   std::vector<Vec3> unmoved,
-                                                  const std::vector<std::uint8_t>& face_changed) {
+                                                  const std::vector<Index>& changed) {
     std::vector<Index> vertices;
     std::vector<std::uint8_t> vertex_changed(mesh.vertex_count(), 0);
-    for (Index f = 0; f < mesh.face_count(); ++f) {
-        if (!face_changed[f]) continue;
+    for (Index f : changed) {
         for (Index v : mesh.triangles[f]) {
             if (!vertex_changed[v]) vertices.push_back(v);
             vertex_changed[v] = 1;
@@ -111,14 +113,9 @@ std::vector<Vec3> vertex_normals_of_changed_faces(const Mesh& mesh,
 SurfaceNormals surface_normals_after_moves(const Mesh& mesh, const Connectivity& connectivity,
                                            SurfaceNormals unmoved,
                                            std::span<const std::uint8_t> moved) {
-    const std::vector<std::uint8_t> face_changed =
-        faces_with_moved_corner(mesh, connectivity, moved);
-    unmoved.vertex = vertex_normals_of_changed_faces(mesh, connectivity, std::move(unmoved.vertex),
-                                                     face_changed);
-    std::vector<Index> faces;
-    for (Index f = 0; f < mesh.face_count(); ++f) {
-        if (face_changed[f]) faces.push_back(f);
-    }
+    const std::vector<Index> faces = faces_with_moved_corner(mesh, connectivity, moved);
+    unmoved.vertex =
+        vertex_normals_of_changed_faces(mesh, connectivity, std::move(unmoved.vertex), faces);
     for_each_index(faces.size(), 4096, [&](std::size_t i) {
         unmoved.face[faces[i]] = unit_or_zero(area_vector(mesh, faces[i]));
     });

@@ -33,6 +33,12 @@ struct SurfaceNormals {
 /// product once where the two functions above would compute it four times.
 SurfaceNormals surface_normals(const Mesh& mesh, const Connectivity& connectivity);
 
+/// The faces of `mesh` with a corner flagged in `moved` (#V), or listed in `also`, ascending,
+/// each once. Only the moved vertices' rings are walked, then the flags once.
+std::vector<Index> faces_with_moved_corner(const Mesh& mesh, const Connectivity& connectivity,
+                                           std::span<const std::uint8_t> moved,
+                                           std::span<const Index> also = {});
+
 /// surface_normals() of `mesh` from `unmoved`, those of a mesh with the same faces whose
 /// vertices flagged in `moved` (#V) sat elsewhere: only the faces with a moved corner and the
 /// vertices of those faces are computed again, the same bits as surface_normals() gives. A near
