@@ -206,21 +206,12 @@ private:
     Index piece_count_ = 0;
 };
 
-/// The input faces split in `output` or left whole there with a moved corner, ascending.
-std::vector<Index> altered_with_moves(const SplitMesh& output,
+/// The input faces split in `output` or left whole there with a moved corner, ascending. A face
+/// left whole is its input face, so its moved corners are its input corners: the moved
+/// vertices' rings find those faces, and no output face is compared with its source.
+std::vector<Index> altered_with_moves(const InputSurface& input, const SplitMesh& output,
                                       std::span<const std::uint8_t> moved) {
-    std::vector<Index> altered;
-    altered.reserve(output.altered_faces.size());
-    auto split = output.altered_faces.begin();
-    const auto split_end = output.altered_faces.end();
-    for (Index o = 0; o < output.source_face.size(); ++o) {
-        const Index f = output.source_face[o];
-        if (!altered.empty() && altered.back() == f) continue;
-        while (split != split_end && *split < f) ++split;
-        const bool split_here = split != split_end && *split == f;
-        if (split_here || has_moved_corner(output.mesh.triangles[o], moved)) altered.push_back(f);
-    }
-    return altered;
+    return faces_with_moved_corner(input.mesh, input.connectivity, moved, output.altered_faces);
 }
 
 class HarmChecker {
@@ -235,8 +226,8 @@ public:
           half_fold_cosine_(std::cos(options.fold_angle_deg * std::numbers::pi / 360.0)),
           check_crossings_(options.check_crossings),
           split_(output, input.mesh,
-                 moved_.empty() ? output.altered_faces : altered_with_moves(output, moved_), moved_,
-                 !moved_.empty()),
+                 moved_.empty() ? output.altered_faces : altered_with_moves(input, output, moved_),
+                 moved_, !moved_.empty()),
           piece_normal_(split_.piece_count()),
           split_box_(split_.size()),
           harmful_(split_.size(), 0) {
