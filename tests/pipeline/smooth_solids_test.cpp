@@ -219,7 +219,7 @@ CsgNode counterbored_block(double r, double depth) {
 // columns of facets, each fewer faces than a tiny patch, with no feature of its surface beside
 // them to join: before join_tiny_leftovers() (feature_segmentation.cpp) the whole counterbore was
 // one band with no crossing edge, its rim and floor circles left as chamfers (aligned, 4.5 to
-// 5.5 h: recall 0.89-0.92 with the block's edges; turned, 4.5 h: 0.95). Plate_holes_bosses has
+// 5.5 h: recall 0.89-0.92 with the block's edges; turned, 4.5 h: 0.947). Plate_holes_bosses has
 // one of 5 h, 3.75 h deep, at 100 cells.
 TEST(SmoothSolidsAlongAGridAxis, CounterboresUnderFourCellsDeepGetTheirRimsBack) {
     for (double r = 4.5; r <= 6.0; r += 0.5) {
