@@ -392,10 +392,10 @@ Index absorbing_patch(const std::vector<Contact>& contacts, double min_mean_cosi
 /// Passes of absorb_tiny at most: clusters of tiny patches on real parts drain in a few.
 constexpr int kMaxAbsorbPasses = 64;
 
+/// `tiny_faces`: faces_of_tiny_patches() of region and role as given.
 std::size_t absorb_tiny(const Connectivity& c, const std::vector<Vec3>& normals,
-                        double max_angle_deg, std::vector<Index>& region,
-                        std::vector<PatchRole>& role) {
-    const std::vector<Index> tiny_faces = faces_of_tiny_patches(region, role);
+                        double max_angle_deg, const std::vector<Index>& tiny_faces,
+                        std::vector<Index>& region, std::vector<PatchRole>& role) {
     const double min_mean_cosine = std::cos(max_angle_deg * kDegree);
     std::size_t absorbed = 0;
     bool changed = true;
@@ -429,22 +429,31 @@ struct TinySets {
     std::vector<std::size_t> faces;  ///< per set root: its faces
 };
 
+/// Calls visit(f, g) for each face f of `tiny_faces` and each face g of a tiny patch across one
+/// of f's edges (each such edge once from either side).
+template <class Visit>
+void for_each_tiny_neighbour(const Connectivity& c, const std::vector<Index>& region,
+                             const std::vector<PatchRole>& role,
+                             const std::vector<Index>& tiny_faces, Visit&& visit) {
+    for (Index f : tiny_faces) {
+        for (Index k = 0; k < 3; ++k) {
+            const Index twin = c.twin[3 * f + k];
+            if (twin != kNoIndex && role[region[face_of(twin)]] == PatchRole::Tiny) {
+                visit(f, face_of(twin));
+            }
+        }
+    }
+}
+
 TinySets join_across_smooth_edges(const Connectivity& c, const std::vector<Vec3>& normals,
                                   double max_angle_deg, const std::vector<Index>& region,
                                   const std::vector<PatchRole>& role,
                                   const std::vector<Index>& tiny_faces) {
     TinySets t{DisjointSets(role.size()), std::vector<std::size_t>(role.size(), 0)};
     const double min_cosine = std::cos(max_angle_deg * kDegree);
-    for (Index f : tiny_faces) {
-        for (Index k = 0; k < 3; ++k) {
-            const Index twin = c.twin[3 * f + k];
-            if (twin == kNoIndex) continue;
-            const Index g = face_of(twin);
-            if (role[region[g]] == PatchRole::Tiny && normals[f].dot(normals[g]) > min_cosine) {
-                t.sets.unite(region[f], region[g]);
-            }
-        }
-    }
+    for_each_tiny_neighbour(c, region, role, tiny_faces, [&](Index f, Index g) {
+        if (normals[f].dot(normals[g]) > min_cosine) t.sets.unite(region[f], region[g]);
+    });
     for (Index f : tiny_faces) ++t.faces[t.sets.find(region[f])];
     return t;
 }
@@ -456,15 +465,11 @@ std::vector<std::uint8_t> meets_another_large_set(const Connectivity& c,
                                                   const std::vector<Index>& tiny_faces,
                                                   std::size_t min_faces, TinySets& t) {
     std::vector<std::uint8_t> meets(role.size(), 0);
-    for (Index f : tiny_faces) {
-        for (Index k = 0; k < 3; ++k) {
-            const Index twin = c.twin[3 * f + k];
-            if (twin == kNoIndex || role[region[face_of(twin)]] != PatchRole::Tiny) continue;
-            const Index mine = t.sets.find(region[f]);
-            const Index theirs = t.sets.find(region[face_of(twin)]);
-            if (mine != theirs && t.faces[theirs] >= min_faces) meets[mine] = 1;
-        }
-    }
+    for_each_tiny_neighbour(c, region, role, tiny_faces, [&](Index f, Index g) {
+        const Index mine = t.sets.find(region[f]);
+        const Index theirs = t.sets.find(region[g]);
+        if (mine != theirs && t.faces[theirs] >= min_faces) meets[mine] = 1;
+    });
     return meets;
 }
 
@@ -477,11 +482,13 @@ std::vector<std::uint8_t> meets_another_large_set(const Connectivity& c,
 /// that meets no other such set, and the set becomes one feature patch. Where two large sets
 /// meet, they are one smooth surface whose facets turn too sharply in places to join (the torus
 /// of 3 h aligned: its tube in sets, with crossing edges and five phantom points between them),
-/// and stay band. Returns the sets made feature patches.
+/// and stay band. Returns the sets made feature patches. `tiny_faces`: the faces of the tiny
+/// patches before absorb_tiny(); those it moved into feature patches are left out here.
 std::size_t join_tiny_leftovers(const Connectivity& c, const std::vector<Vec3>& normals,
                                 double max_angle_deg, std::size_t min_faces,
-                                std::vector<Index>& region, std::vector<PatchRole>& role) {
-    const std::vector<Index> tiny_faces = faces_of_tiny_patches(region, role);
+                                std::vector<Index> tiny_faces, std::vector<Index>& region,
+                                std::vector<PatchRole>& role) {
+    std::erase_if(tiny_faces, [&](Index f) { return role[region[f]] != PatchRole::Tiny; });
     TinySets t = join_across_smooth_edges(c, normals, max_angle_deg, region, role, tiny_faces);
     const std::vector<std::uint8_t> crowded =
         meets_another_large_set(c, region, role, tiny_faces, min_faces, t);
@@ -861,10 +868,12 @@ FeatureSegmentation segment_features(const Mesh& mesh, const Connectivity& conne
     std::vector<PatchRole> role = assign_roles(census, options);
     s.band_patches =
         static_cast<std::size_t>(std::count(role.begin(), role.end(), PatchRole::Band));
+    std::vector<Index> tiny_faces = faces_of_tiny_patches(region, role);
     s.tiny_absorbed =
-        absorb_tiny(connectivity, face_normals, options.merge_angle_deg, region, role);
-    s.tiny_joined = join_tiny_leftovers(connectivity, face_normals, options.merge_angle_deg,
-                                        options.tiny_patch_faces, region, role);
+        absorb_tiny(connectivity, face_normals, options.merge_angle_deg, tiny_faces, region, role);
+    s.tiny_joined =
+        join_tiny_leftovers(connectivity, face_normals, options.merge_angle_deg,
+                            options.tiny_patch_faces, std::move(tiny_faces), region, role);
 
     for (Index& r : region) {
         if (role[r] == PatchRole::Band) r = kNoIndex;
