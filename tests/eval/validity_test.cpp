@@ -54,35 +54,40 @@ TEST(Validity, FlippedFacesAgainstExactNormals) {
     output.positions.push_back(Vec3(0.3, 0.35, 0));                   // 5
     output.triangles = {{0, 1, 3}, {1, 2, 3}, {2, 3, 0}, {3, 5, 4}};  // {2,3,0} and {3,5,4}: -z
     EXPECT_EQ(count_flipped_faces(input, output, oracle, exact, FlipScope::ChangedFaces), 2u);
-    // The input itself: no face flipped; with one vertex's normal reversed, its face is.
+    // The input itself: no face flipped; with one vertex's normal reversed, its face is, unless
+    // the samples where it lies face its way.
     EXPECT_EQ(count_flipped_faces(input, input, oracle, exact, FlipScope::AllFaces), 0u);
     EXPECT_EQ(count_flipped_faces(input, input, oracle, exact, FlipScope::ChangedFaces), 0u);
     Oracle reversed = oracle;
     reversed.normals[1] = -Vec3::UnitZ();
-    EXPECT_EQ(count_flipped_faces(input, input, reversed, exact, FlipScope::AllFaces), 1u);
+    EXPECT_EQ(count_flipped_faces(input, input, reversed, SurfaceSamples{}, FlipScope::AllFaces),
+              1u);
+    EXPECT_EQ(count_flipped_faces(input, input, reversed, exact, FlipScope::AllFaces), 0u);
     EXPECT_THROW(count_flipped_faces(input, output, Oracle{}, exact, FlipScope::AllFaces),
                  InvalidInput);
 }
 
-// An off-surface mesher's vertex beside a 90 degree edge carries the other face's normal (+x)
-// though its face lies on z = 0: judged where the face lies, the face is not flipped, and its
-// reversal is.
-TEST(Validity, FlippedFacesOfOffSurfaceVerticesWhereTheyLie) {
+// A vertex beside or on a 90 degree edge carries the other face's normal (+x) though its face
+// lies on z = 0: an off-surface mesher's vertex, one on the edge itself (a grid line crossing
+// the edge), a bisection vertex h/512 off. Judged where the face lies, the face is not flipped,
+// and its reversal is; without samples only the vertex test can judge it.
+TEST(Validity, FlippedFacesOfVerticesOnTheOtherSurfaceWhereTheyLie) {
     const Mesh input{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, {{0, 1, 2}}};
     const Oracle on_surface{{Vec3::UnitX(), Vec3::UnitZ(), Vec3::UnitZ()}, {1, 0, 0}};
     Oracle off_surface = on_surface;
     off_surface.surface_points = {Vec3(0, 0, 0.1), Vec3(1, 0, 0), Vec3(0, 1, 0)};
-    const SurfaceSamples exact{{Vec3(0.3, 0.3, 0), Vec3(5, 0.3, 0.3)},
-                               {Vec3::UnitZ(), Vec3::UnitX()}};
-    EXPECT_EQ(count_flipped_faces(input, input, on_surface, exact, FlipScope::AllFaces), 1u);
-    EXPECT_EQ(count_flipped_faces(input, input, off_surface, exact, FlipScope::AllFaces), 0u);
-    // A bisection vertex, h/512 off its surface point, keeps the vertex-normal criterion.
     Oracle barely_off = on_surface;
     barely_off.surface_points = {Vec3(0, 0, 1e-3), Vec3(1, 0, 0), Vec3(0, 1, 0)};
-    EXPECT_EQ(count_flipped_faces(input, input, barely_off, exact, FlipScope::AllFaces), 1u);
+    const SurfaceSamples exact{{Vec3(0.3, 0.3, 0), Vec3(5, 0.3, 0.3)},
+                               {Vec3::UnitZ(), Vec3::UnitX()}};
     Mesh reversed = input;
     std::swap(reversed.triangles[0][1], reversed.triangles[0][2]);
-    EXPECT_EQ(count_flipped_faces(input, reversed, off_surface, exact, FlipScope::AllFaces), 1u);
+    for (const Oracle& oracle : {on_surface, off_surface, barely_off}) {
+        EXPECT_EQ(count_flipped_faces(input, input, oracle, exact, FlipScope::AllFaces), 0u);
+        EXPECT_EQ(count_flipped_faces(input, reversed, oracle, exact, FlipScope::AllFaces), 1u);
+    }
+    EXPECT_EQ(count_flipped_faces(input, input, on_surface, SurfaceSamples{}, FlipScope::AllFaces),
+              1u);
 }
 
 // A face of an off-surface mesher on the top (z = 0) of a convex 90 degree edge, 0.1 above it

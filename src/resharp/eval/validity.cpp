@@ -140,11 +140,15 @@ std::vector<std::uint8_t> flipped_faces(const Mesh& input, const Mesh& output, c
             face_offset = std::max(face_offset, offset(v));
             is_flipped = is_flipped || n.dot(oracle.normals[v]) <= 0.0;
         }
-        if ((!has_input_vertex || face_offset > off_distance) && exact.size() > 0) {
+        if ((!has_input_vertex || face_offset > off_distance || is_flipped) && exact.size() > 0) {
             // A face whose mesher put its vertices up to face_offset off the surface may lie
             // that much nearer one face of an edge than the other, and the surface point
             // nearest it lie up to the samples' spacing from the nearest sample: it is turned
-            // only if it turns against every sample within both of the nearest.
+            // only if it turns against every sample within both of the nearest. So too a face
+            // the vertex test finds turned: a vertex on an edge (a grid line crossing it) has
+            // the normal of one of its two surfaces, and a face on the other one meets that
+            // normal at the edge's angle, 90 degrees or more (CAD parts at 100 cells: every
+            // split piece so counted lay on the other surface).
             const Vec3 q = (a + b + c) / 3.0;
             is_flipped = turned_against_every_nearest(
                 exact_grid, q, n.normalized(), face_offset + exact.spacing,

@@ -35,15 +35,17 @@ enum class FlipScope {
 /// Faces turned against the surface they lie on: the face normal has a non-positive dot
 /// product with the exact normal (`oracle`) of one of its input vertices, or, for a face of new
 /// vertices only, turns more than 90 degrees against the normal of the exact sample nearest
-/// its centroid. A face with an input vertex farther than 1 % of the mean edge length from its
-/// oracle surface point (a midpoint or surface-nets vertex; bisection's, h/512 off, are not) is
-/// judged at its centroid too, since an off-surface vertex beside an edge carries the other
-/// face's normal; and there it is flipped only if it turns more than 90 degrees against every
-/// sample no farther than the nearest plus the largest such offset among its vertices plus the
-/// samples' spacing: a mesh that far off the surface may lie that much nearer one face of an
-/// edge than the other, and the surface point nearest it lie about a spacing from the nearest
-/// sample, so a face on the top of a convex edge, overhanging its wall, is judged against the
-/// top as well as the wall. Degenerate faces
+/// its centroid. Where `exact` has samples, a face the vertex test finds turned is judged at its
+/// centroid too, since a vertex on an edge carries one of its two surfaces' normals and a face
+/// on the other surface meets it at the edge's angle; so is a face with an input vertex farther
+/// than 1 % of the mean edge length from its oracle surface point (a midpoint or surface-nets
+/// vertex; bisection's, h/512 off, are not), since an off-surface vertex beside an edge carries
+/// the other face's normal. There it is flipped only if it turns more than 90 degrees against
+/// every sample no farther than the nearest plus the largest such offset among its vertices
+/// plus the samples' spacing: a mesh that far off the surface may lie that much nearer one face
+/// of an edge than the other, and the surface point nearest it lie about a spacing from the
+/// nearest sample, so a face on the top of a convex edge, overhanging its wall, is judged
+/// against the top as well as the wall. Degenerate faces
 /// are not counted. `output` starts with `input`'s vertices; pass input as output with
 /// AllFaces to count the input's own flipped slivers.
 /// \throws InvalidInput if the output does not start with the input's vertices or the oracle
