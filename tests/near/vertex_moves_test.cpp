@@ -11,10 +11,12 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "resharp/core/errors.h"
 #include "resharp/pipeline/restore.h"
+#include "resharp/sim/csg_file.h"
 #include "support/small_parts.h"
 
 namespace resharp {
@@ -275,6 +277,43 @@ TEST(VertexMoves, SurfaceNetsBandVerticesFindTheirOtherSideAcrossAWideBand) {
     EXPECT_GT(band, 100u);
     // 408 of 494 here; 358 with the other sides fitted within the three rings only.
     EXPECT_GE(moved, 4 * band / 5);
+}
+
+// The stepped block of the CAD corpus (examples/cad) by surface nets at 100 cells: along a
+// straight edge every band vertex whose cell the edge crosses goes onto it only if every one
+// beside it does (the one-sided rule), so a vertex left off the edge leaves its whole row off.
+// The last cell before a corner, whose face has few vertices off the three bands nearby, has
+// its own plane fitted farther out (for the junction only) and reaches the edge too.
+TEST(VertexMoves, SurfaceNetsRowsAlongABlocksEdgesReachItUpToTheCorners) {
+    const sim::CsgSolid solid(
+        sim::read_csg(std::string(RESHARP_SOURCE_DIR) + "/examples/cad/stepped_block.json"));
+    const double pitch = sim::pitch_for_cells(solid.bounds(), 100);
+    const sim::DexelGrid grid =
+        sim::sample_solid(sim::phased_grid(solid.bounds(), pitch, 0.4142), solid);
+    const Mesh mesh = sim::mesh_dexels(grid, {.mesher = sim::Mesher::SurfaceNets}).mesh;
+    const Grid cells{grid.spec.pitch, grid.spec.origin};
+    const Detection d = detect_bands(mesh, build_connectivity(mesh), {});
+    const VertexMoves moves =
+        plan_vertex_moves(d.surface(mesh), mesh.positions, d.features.vertex_patch, d.bands,
+                          {VertexPlacement::Near, cells, FitScope::Patches});
+    // The block's planes: its box, the step, the pocket and the slot.
+    const std::array<std::vector<double>, 3> planes{{{0.0, 6.0, 14.0, 20.0, 28.0, 52.0, 60.0},
+                                                     {0.0, 10.0, 14.0, 26.0, 30.0, 40.0},
+                                                     {0.0, 16.0, 18.0, 30.0}}};
+    std::size_t on_edge = 0;
+    for (Index v = 0; v < mesh.vertex_count(); ++v) {
+        if (!moves.moved[v]) continue;
+        EXPECT_TRUE(in_same_cell(cells, mesh.positions[v], moves.position[v])) << v;
+        int on_planes = 0;
+        for (int a = 0; a < 3; ++a) {
+            on_planes += std::any_of(planes[a].begin(), planes[a].end(), [&](double c) {
+                return std::abs(moves.position[v][a] - c) < 1e-9;
+            });
+        }
+        on_edge += on_planes >= 2;
+    }
+    // 943 here; 910 while those last cells kept no plane of their own.
+    EXPECT_GE(on_edge, 935u);
 }
 
 TEST(VertexMoves, MidpointVerticesMoveAlongTheirGridEdgeOnly) {

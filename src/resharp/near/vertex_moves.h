@@ -31,7 +31,8 @@ struct VertexMoveOptions {
     /// min_fit_points of the other side's vertices off the band, and no plane to tell which part of
     /// its own plane bounds the solid. Its own plane, which it moves onto, is always fitted within
     /// fit_rings: on a curved patch a plane fitted this wide leaves the surface (spool lost 0.3 of
-    /// its Edge F-score).
+    /// its Edge F-score); fitted this wide where it has none nearby, it leads only onto a
+    /// junction of flat sides.
     int other_side_fit_rings = 5;
     /// A patch with fewer vertices than this in reach gets no plane there.
     int min_fit_points = 6;
