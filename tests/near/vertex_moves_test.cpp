@@ -138,17 +138,24 @@ TEST(VertexMoves, CurvedSideFittedWithinTheFitRingsWhereverTheOtherSidesAre) {
     EXPECT_GT(both, 100u);
 }
 
-/// How many of p's coordinates lie on a face plane of the pocketed block (the box [0, 14] x
-/// [0, 11] x [0, 6] less the pocket [3, 8] x [3, 8] x [2.8, 7]): two on an edge between them.
-int coordinates_on_block_planes(const Vec3& p) {
-    const std::array<std::vector<double>, 3> planes{
-        {{0.0, 14.0, 3.0, 8.0}, {0.0, 11.0, 3.0, 8.0}, {0.0, 6.0, 2.8}}};
+/// Axis-aligned planes, per axis the coordinates where they cross it.
+using AxisPlanes = std::array<std::vector<double>, 3>;
+
+/// How many of p's coordinates lie on one of `planes`: two on an edge between them.
+int coordinates_on_planes(const Vec3& p, const AxisPlanes& planes) {
     int count = 0;
     for (int a = 0; a < 3; ++a) {
         count += std::any_of(planes[a].begin(), planes[a].end(),
                              [&](double c) { return std::abs(p[a] - c) < 1e-9; });
     }
     return count;
+}
+
+/// coordinates_on_planes() of the pocketed block's face planes (the box [0, 14] x [0, 11] x
+/// [0, 6] less the pocket [3, 8] x [3, 8] x [2.8, 7]).
+int coordinates_on_block_planes(const Vec3& p) {
+    return coordinates_on_planes(p,
+                                 {{{0.0, 14.0, 3.0, 8.0}, {0.0, 11.0, 3.0, 8.0}, {0.0, 6.0, 2.8}}});
 }
 
 /// Whether p lies on the rim of the pocketed block's through hole (the cylinder of radius 1.9 mm
@@ -297,20 +304,14 @@ TEST(VertexMoves, SurfaceNetsRowsAlongABlocksEdgesReachItUpToTheCorners) {
         plan_vertex_moves(d.surface(mesh), mesh.positions, d.features.vertex_patch, d.bands,
                           {VertexPlacement::Near, cells, FitScope::Patches});
     // The block's planes: its box, the step, the pocket and the slot.
-    const std::array<std::vector<double>, 3> planes{{{0.0, 6.0, 14.0, 20.0, 28.0, 52.0, 60.0},
-                                                     {0.0, 10.0, 14.0, 26.0, 30.0, 40.0},
-                                                     {0.0, 16.0, 18.0, 30.0}}};
+    const AxisPlanes planes{{{0.0, 6.0, 14.0, 20.0, 28.0, 52.0, 60.0},
+                             {0.0, 10.0, 14.0, 26.0, 30.0, 40.0},
+                             {0.0, 16.0, 18.0, 30.0}}};
     std::size_t on_edge = 0;
     for (Index v = 0; v < mesh.vertex_count(); ++v) {
         if (!moves.moved[v]) continue;
         EXPECT_TRUE(in_same_cell(cells, mesh.positions[v], moves.position[v])) << v;
-        int on_planes = 0;
-        for (int a = 0; a < 3; ++a) {
-            on_planes += std::any_of(planes[a].begin(), planes[a].end(), [&](double c) {
-                return std::abs(moves.position[v][a] - c) < 1e-9;
-            });
-        }
-        on_edge += on_planes >= 2;
+        on_edge += coordinates_on_planes(moves.position[v], planes) >= 2;
     }
     // 943 here; 910 while those last cells kept no plane of their own.
     EXPECT_GE(on_edge, 935u);

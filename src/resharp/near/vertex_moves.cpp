@@ -220,8 +220,10 @@ public:
                                       : neighbourhood_side(v, scratch, sides);
         if (count == 0) return {};
         const std::span<const Side> around(sides.data(), count);
-        if (own_fitted_farther) return {std::nullopt, point_on_sides_junction(v, around), false};
-        return {point_on_own_side(v, around, scratch), point_on_sides_junction(v, around), false};
+        // A plane fitted farther out leads only onto a junction (patch_sides()).
+        const std::optional<Vec3> own =
+            own_fitted_farther ? std::nullopt : point_on_own_side(v, around, scratch);
+        return {own, point_on_sides_junction(v, around), false};
     }
 
 private:
