@@ -260,9 +260,10 @@ json cad_block(const ExactReference& reference, const Mesh& input, const Mesh& o
 
 /// The input with its vertices where `output` (which starts with them, in order) has them:
 /// the input itself unless the restoration moved vertices, as near-surface restoration does
-/// within a grid cell.
-/// \throws InvalidInput if output has fewer vertices, or moved one further than a cell's
-///         diagonal (sqrt(3) h).
+/// within a grid cell (or, for a vertex in a cell its surfaces do not cross, the cells around
+/// it: near/vertex_moves.h).
+/// \throws InvalidInput if output has fewer vertices, or moved one further than the diagonal
+///         of the two cells a move may span along each axis (2 sqrt(3) h).
 Mesh input_as_placed(const Mesh& input, const Mesh& output, double h) {
     if (output.vertex_count() < input.vertex_count())
         throw InvalidInput("the output has fewer vertices than the input");
@@ -270,10 +271,10 @@ Mesh input_as_placed(const Mesh& input, const Mesh& output, double h) {
                 input.triangles};
     for (std::size_t v = 0; v < input.vertex_count(); ++v) {
         const double move = (placed.positions[v] - input.positions[v]).norm();
-        if (move > std::sqrt(3.0) * h * (1.0 + 1e-9)) {
+        if (move > 2.0 * std::sqrt(3.0) * h * (1.0 + 1e-9)) {
             throw InvalidInput("output vertex " + std::to_string(v) + " lies " +
                                std::to_string(move) + " mm from input vertex " + std::to_string(v) +
-                               ", more than a grid cell's diagonal");
+                               ", more than the diagonal of two grid cells");
         }
     }
     return placed;

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -11,7 +12,9 @@
 #include "openvdb_mesher.h"
 #include "resharp/mesh/connectivity.h"
 #include "resharp/mesh/diagnostics.h"
+#include "resharp/near/concave_bevels.h"
 #include "resharp/near/vertex_placement.h"
+#include "resharp/pipeline/restore.h"
 #include "support/grid_shapes.h"
 
 namespace resharp {
@@ -53,6 +56,31 @@ TEST(OpenVdbPlacement, VoxelCentresFollowTheOrigin) {
         const double steps = (e.grid->origin[a] - origin[a]) / e.grid->pitch;
         EXPECT_NEAR(steps, std::round(steps), 1e-3) << "axis " << a << ": " << e.reason;
     }
+}
+
+// OpenVDB bevels the L-block's concave edge over two to three cells (near/concave_bevels.h):
+// the patches dissolved are that bevel's, their vertices within two pitches of the edge but the
+// few where it ends at the block's sides.
+TEST(ConcaveBevels, OpenVdbsBevelAlongTheLBlocksConcaveEdgeIsDissolved) {
+    const test::SampledShape fine = test::sampled_l_block(kPitch / kFine);
+    const Mesh dual = extras::openvdb_dual_mesh(fine.mesh, kPitch);
+    const PlacementEstimate e = estimate_vertex_placement(dual);
+    ASSERT_TRUE(e.grid.has_value()) << e.reason;
+    const Detection d = detect_bands(dual, build_connectivity(dual), {});
+    const BevelDissolution b =
+        without_concave_bevels(d.surface(dual), d.features, d.bands, *e.grid);
+    EXPECT_GE(b.bevels, 1u);
+    const auto concave = std::find_if(fine.edges.begin(), fine.edges.end(),
+                                      [](const test::ExactEdge& edge) { return edge.is_concave; });
+    ASSERT_NE(concave, fine.edges.end());
+    std::size_t changed = 0, near_the_edge = 0;
+    for (Index v = 0; v < dual.vertex_count(); ++v) {
+        if (b.features.vertex_patch[v] == d.features.vertex_patch[v]) continue;
+        ++changed;
+        near_the_edge += concave->distance(dual.positions[v]) <= 2.0 * kPitch;
+    }
+    EXPECT_GT(changed, 30u);  // the edge is 15.7 pitches long, its bevel two or three rows wide
+    EXPECT_GE(near_the_edge, 9 * changed / 10);
 }
 
 }  // namespace

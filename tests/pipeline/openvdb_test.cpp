@@ -4,10 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <functional>
 #include <string>
 
 #include "openvdb_mesher.h"
+#include "resharp/eval/cad_metrics.h"
 #include "resharp/mesh/diagnostics.h"
 #include "resharp/mesh/geometry.h"
 #include "resharp/pipeline/restore.h"
@@ -54,6 +56,46 @@ TEST(OpenVdbMesher, SimulatedSolidsRestoreWithoutHarm) {
         EXPECT_GT(r.report.edge_points_inserted, 0u);
         test::expect_no_harm(input, r, options);
     }
+}
+
+/// The share of the segment a-b, sampled every tenth of a pitch, that has a sharp edge of `mesh`
+/// (faces parting by more than 30 degrees) within `tolerance` (mm).
+double share_beside_a_crease(const Mesh& mesh, const Vec3& a, const Vec3& b, double tolerance) {
+    const eval::CurveSamples creases = eval::sample_mesh_creases(mesh, 30.0, 0.1 * kPitch);
+    eval::CurveSamples segment;
+    const double step = 0.1 * kPitch;
+    const auto count = static_cast<int>((b - a).norm() / step);
+    for (int i = 0; i < count; ++i) {
+        segment.points.push_back(a + (i + 0.5) / count * (b - a));
+        segment.tangents.push_back((b - a).normalized());
+        segment.weights.push_back(step);
+        segment.half_spans.push_back(0.5 * step);
+    }
+    const std::vector<double> d = eval::crease_distances(segment, creases);
+    const auto near = std::count_if(d.begin(), d.end(), [&](double x) { return x <= tolerance; });
+    return static_cast<double>(near) / static_cast<double>(d.size());
+}
+
+// OpenVDB bevels a concave edge over two to three cells, its middle vertices in cells the
+// surface does not cross (near/concave_bevels.h): segmentation takes the bevel for a face, and
+// its two borders came back as creases half a pitch off the edge. Given back to the band, the
+// bevel's vertices go onto the step's faces and its edge, and the edge comes back sharp.
+TEST(OpenVdbMesher, TheLBlocksConcaveEdgeComesBackSharpOnTheEdge) {
+    const test::SampledShape fine = test::sampled_l_block(kPitch / kFine);
+    const Mesh input = extras::openvdb_dual_mesh(fine.mesh, kPitch);
+    const RestoreOptions options;
+    const RestoreResult r = restore(input, options);
+    const auto concave = std::find_if(fine.edges.begin(), fine.edges.end(),
+                                      [](const test::ExactEdge& e) { return e.is_concave; });
+    ASSERT_NE(concave, fine.edges.end());
+    // A pitch off each end, where the step meets the block's sides.
+    const Vec3 along = (concave->b - concave->a).normalized();
+    const Vec3 a = concave->a + kPitch * along, b = concave->b - kPitch * along;
+    const double tolerance = 0.1 * kPitch;
+    EXPECT_GE(r.report.bevels_dissolved, 1u);
+    EXPECT_LT(share_beside_a_crease(input, a, b, tolerance), 0.1);
+    EXPECT_GT(share_beside_a_crease(r.mesh, a, b, tolerance), 0.9);
+    test::expect_no_harm(input, r, options);
 }
 
 }  // namespace

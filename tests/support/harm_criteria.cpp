@@ -169,7 +169,7 @@ std::size_t new_self_intersections(const Mesh& input, const Mesh& output,
 }
 
 HarmCriteria criteria_for(const RestoreReport& report) {
-    return {.allowed_move = std::sqrt(3.0) * report.grid_pitch};
+    return {.allowed_move = 2.0 * std::sqrt(3.0) * report.grid_pitch};
 }
 
 HarmFound find_harm(const Mesh& input, const Mesh& output, std::span<const Index> source_face,

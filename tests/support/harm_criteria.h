@@ -59,8 +59,9 @@ struct HarmCriteria {
     double allowed_move = 0.0;
 };
 
-/// The criteria for a restoration that reported `report`: input vertices may move within a
-/// cell's diagonal of the grid it names (near-surface restoration), not at all without one.
+/// The criteria for a restoration that reported `report`: input vertices may move within the
+/// diagonal of two cells of the grid it names (near-surface restoration: its own cell, or the
+/// cells around it where the surface does not cross its own), not at all without one.
 HarmCriteria criteria_for(const RestoreReport& report);
 
 /// Every criterion on the input, the output and its source faces (#F out). Edges are counted

@@ -30,7 +30,7 @@ void expect_no_new_self_intersections(const Mesh& input, const Mesh& output);
 
 /// What must hold of any restoration of `input` into `r` with `options`: the harm loop within its
 /// bound and nothing find_harm() (support/harm_criteria.h) finds, each criterion its own failure;
-/// input vertices stay in place, or within a cell's diagonal of the grid r's report names.
+/// input vertices stay in place, or within the diagonal of two cells of the grid r's report names.
 void expect_no_harm(const Mesh& input, const RestoreResult& r, const RestoreOptions& options);
 
 /// Distance from p to the segment a-b.

@@ -259,7 +259,9 @@ private:
     /// between the faces, off both; the edge itself is where it belongs (dual contouring's vertex).
     std::optional<Vec3> point_on_junction(Index v, Scratch& scratch) const {
         std::array<Index, kMaxSides> patches{};
-        const std::size_t count = add_ring_patches(v, patches, 0);
+        std::size_t count = add_ring_patches(v, patches, 0);
+        const bool beyond_ring = count < 2;
+        if (beyond_ring) count = add_reached_patches(v, patches, count, scratch);
         if (count < 2 || count > 3) return std::nullopt;
         const std::span<const Index> around(patches.data(), count);
         Fits fits;
@@ -270,18 +272,20 @@ private:
             if (!fits[i]) return point_on_curved_junction(v, around, scratch);
             planes[i] = *fits[i];
         }
+        const Vec3& x = current_.mesh.positions[v];
+        if (beyond_ring && count == 3) count = nearest_two_first(x, planes);
         if (!flat_enough(std::span(planes.data(), count)))
             return point_on_curved_junction(v, around, scratch);
         const std::optional<Junction> junction = sharp_junction(std::span(planes.data(), count));
         if (!junction) return std::nullopt;
+        const Cell reach = junction_reach(input_[v], std::span(planes.data(), count));
         const Vec3 y = nearest_to_cell(
-            current_.mesh.positions[v], [&](const Vec3& p) { return junction->projection(p); },
-            input_[v]);
+            x, [&](const Vec3& p) { return junction->projection(p); }, reach);
         // A cell-mean vertex may be wrong by its cell and no more. Where the edge passes
         // beside the cell (off the grid axes, the cells along a convex edge whose corners all
         // lie outside make no vertex; the vertex beside them stands for their part of the
         // edge), it goes as near the edge as its cell allows.
-        return cell_of(input_[v]).clamp(y);
+        return reach.clamp(y);
     }
 
     /// Midpoint: a vertex that segmentation left in a band with no patch of its own, among two
@@ -336,7 +340,8 @@ private:
             sharp_junction(std::span(planes.data(), sides.size()));
         if (!junction) return std::nullopt;
         const auto project = [&](const Vec3& p) { return junction->projection(p); };
-        const Vec3 y = cell_of(input_[v]).clamp(nearest_to_cell(x, project, input_[v]));
+        const Cell cell = cell_of(input_[v]);
+        const Vec3 y = cell.clamp(nearest_to_cell(x, project, cell));
         if ((project(y) - y).norm() > tolerance) return std::nullopt;
         return y;
     }
@@ -562,6 +567,19 @@ private:
         return count;
     }
 
+    /// patches[0, count) and then the other patches of the vertices within the fit rings of v
+    /// (gathered into scratch), in the order met; kMaxSides + 1 where there are more than
+    /// kMaxSides. A band two faces wide or more (a dual mesher's bevel across a concave edge,
+    /// near/concave_bevels.h) leaves vertices of no patch between vertices of none.
+    std::size_t add_reached_patches(Index v, std::array<Index, kMaxSides>& patches,
+                                    std::size_t count, Scratch& scratch) const {
+        gather_fit_rings(v, scratch);
+        for (Index j : scratch.reached) {
+            if (!add_patch_of(j, patches, count)) return kMaxSides + 1;
+        }
+        return count;
+    }
+
     /// Adds vertex j's patch to patches[0, count) unless it has none or is there already;
     /// false where it is new but kMaxSides are there (it is then left out).
     bool add_patch_of(Index j, std::array<Index, kMaxSides>& patches, std::size_t& count) const {
@@ -756,8 +774,9 @@ private:
     std::optional<Vec3> nearest_in_cell(const Vec3& x, const Plane& plane, const Vec3& from) const {
         const Vec3 y = plane.projection(x);
         if (within_reach(from, y)) return y;
-        const Vec3 in_cell = cell_of(from).clamp(nearest_to_cell(
-            x, [&](const Vec3& p) { return plane.projection(p); }, from));
+        const Cell cell = cell_of(from);
+        const Vec3 in_cell = cell.clamp(nearest_to_cell(
+            x, [&](const Vec3& p) { return plane.projection(p); }, cell));
         if (std::abs(plane.signed_distance(in_cell)) > on_plane_tolerance()) return std::nullopt;
         return in_cell;
     }
@@ -766,6 +785,12 @@ private:
     struct Cell {
         Vec3 low, high;
         Vec3 clamp(const Vec3& y) const { return y.cwiseMax(low).cwiseMin(high); }
+        /// Whether the plane passes through the box (touching it counts).
+        bool crossed_by(const Plane& plane) const {
+            const Vec3 half = 0.5 * (high - low);
+            return std::abs(plane.signed_distance(0.5 * (low + high))) <=
+                   plane.normal.cwiseAbs().dot(half);
+        }
     };
 
     Cell cell_of(const Vec3& from) const {
@@ -775,14 +800,43 @@ private:
         return {low, low + Vec3::Constant(h)};
     }
 
-    /// The limit of Dykstra's alternating projections from x onto the grid cell of input place
-    /// `from` and onto an affine set (a plane, line or point: `project` gives its point nearest
-    /// a point), at most kProjectionRounds rounds, as a point of the set: its point nearest x
-    /// within the cell where the set meets the cell, else near its point nearest the cell.
-    template <class Project>
-    Vec3 nearest_to_cell(const Vec3& x, const Project& project, const Vec3& from) const {
-        constexpr int kProjectionRounds = 64;
+    /// The two of three planes nearest x first; gives 2. A vertex between patches that meets
+    /// them only beyond its ring lies in a band several faces wide (a dual mesher's bevel
+    /// across a concave edge, near/concave_bevels.h), and a third face within the fit rings is
+    /// where the bevel ends (the part's side), not a corner of it: the junction of all three
+    /// took the bevel's last cells towards the corner, out of reach.
+    static std::size_t nearest_two_first(const Vec3& x, std::array<PlaneFit, 3>& planes) {
+        const auto farthest = std::max_element(
+            planes.begin(), planes.end(), [&](const PlaneFit& a, const PlaneFit& b) {
+                return std::abs(a.plane.signed_distance(x)) < std::abs(b.plane.signed_distance(x));
+            });
+        std::swap(*farthest, planes[2]);
+        return 2;
+    }
+
+    /// How far a vertex between patches may go towards the junction of `planes`: its input
+    /// cell, or where no plane crosses that cell, the cells around it too. A cell-mean vertex
+    /// in a cell the surface does not cross was not placed by the surface but by a distance
+    /// the mesher got wrong by more than a cell: OpenVDB's, interpolated across a concave
+    /// corner (near/concave_bevels.h), puts the middle vertex of its bevel in the empty corner,
+    /// a cell beyond the edge's own.
+    Cell junction_reach(const Vec3& from, std::span<const PlaneFit> planes) const {
         const Cell cell = cell_of(from);
+        const bool crossed = std::any_of(planes.begin(), planes.end(), [&](const PlaneFit& fit) {
+            return cell.crossed_by(fit.plane);
+        });
+        if (crossed) return cell;
+        const Vec3 one = Vec3::Constant(rule_.grid.pitch);
+        return {cell.low - one, cell.high + one};
+    }
+
+    /// The limit of Dykstra's alternating projections from x onto `cell` and onto an affine set
+    /// (a plane, line or point: `project` gives its point nearest a point), at most
+    /// kProjectionRounds rounds, as a point of the set: its point nearest x within the cell
+    /// where the set meets the cell, else near its point nearest the cell.
+    template <class Project>
+    static Vec3 nearest_to_cell(const Vec3& x, const Project& project, const Cell& cell) {
+        constexpr int kProjectionRounds = 64;
         Vec3 p = Vec3::Zero(), q = Vec3::Zero();
         Vec3 y = x;
         for (int round = 0; round < kProjectionRounds; ++round) {

@@ -3,10 +3,11 @@
 /// the surface rather than on it, each vertex is moved onto the surface of its feature patch as
 /// the patch's own vertices around it show that surface (a fitted plane), and only within what
 /// its mesher could have got wrong: a midpoint vertex along its own grid edge (the true crossing
-/// lies on that edge), a cell-mean vertex within its own cell. A band vertex goes onto the
-/// side of its own patch, where that side is part of the solid's boundary next to the other
-/// sides around it; the exact method of the paper then restores the band between the sides, its
-/// vertices now on them.
+/// lies on that edge), a cell-mean vertex within its own cell (within the cells around it where
+/// the surface does not cross its own: there the mesher got it wrong by more). A band vertex goes
+/// onto the side of its own patch, where that side is part of the solid's boundary next to the
+/// other sides around it; the exact method of the paper then restores the band between the sides,
+/// its vertices now on them.
 
 #include <cstddef>
 #include <cstdint>
@@ -87,21 +88,23 @@ struct MoveRule {
 /// Near: band vertices move by the shortest way onto the side of their own patch, where it
 /// bounds the solid next to the other sides and within their input cell (the others lie on
 /// their surface already, up to its curvature); a vertex of no patch whose ring meets two or
-/// three patches moves onto where their planes meet (the sharp edge or corner): the point of it
-/// nearest the vertex within its input cell, or, where it misses that cell, the cell's point
-/// nearest it. A band vertex of a patch that lies off its own plane goes instead onto where its
-/// sides' planes meet, where that crosses its cell and every face around it then lies on one
-/// side: its two other corners of one patch, or one of them on a junction too (the largest set
-/// of such vertices, which does not depend on the order they are judged in).
-/// Midpoint: every vertex with a plane of its own
-/// patch (or, Neighbourhood, around it) moves along its input grid edge onto it, within the edge;
-/// a patch whose vertices off the bands scatter about one plane as midpoints of one face's
-/// crossings do has that plane, fitted to all of them, and a vertex of no patch among such
-/// patches goes where its grid edge meets the boundary their planes make.
-/// Exact: nothing moves. A vertex without a plane keeps its current position. Each vertex is
-/// decided alone, from the inputs only: the same on any number of threads. The result counts
-/// moves from the input positions.
-/// \throws InvalidInput if the grid's pitch is not positive or an option is out of range.
+/// three patches (those of its ring's vertices, or where they have fewer than two, of the
+/// vertices within the fit rings: the two whose planes lie nearest it) moves onto where their
+/// planes meet (the sharp edge or corner): the point of it nearest the vertex within its input
+/// cell, or, where it misses that cell, the cell's point nearest it; where no plane crosses the
+/// input cell (the mesher put the vertex where the surface is not, as OpenVDB does across a
+/// concave corner, near/concave_bevels.h), within the cells around it too. A band vertex of a patch
+/// that lies off its own plane goes instead onto where its sides' planes meet, where that crosses
+/// its cell and every face around it then lies on one side: its two other corners of one patch, or
+/// one of them on a junction too (the largest set of such vertices, which does not depend on the
+/// order they are judged in). Midpoint: every vertex with a plane of its own patch (or,
+/// Neighbourhood, around it) moves along its input grid edge onto it, within the edge; a patch
+/// whose vertices off the bands scatter about one plane as midpoints of one face's crossings do has
+/// that plane, fitted to all of them, and a vertex of no patch among such patches goes where its
+/// grid edge meets the boundary their planes make. Exact: nothing moves. A vertex without a plane
+/// keeps its current position. Each vertex is decided alone, from the inputs only: the same on any
+/// number of threads. The result counts moves from the input positions. \throws InvalidInput if the
+/// grid's pitch is not positive or an option is out of range.
 VertexMoves plan_vertex_moves(const InputSurface& current, const std::vector<Vec3>& input,
                               const std::vector<Index>& vertex_patch,
                               const BandClassification& bands, const MoveRule& rule,

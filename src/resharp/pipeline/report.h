@@ -91,6 +91,9 @@ struct RestoreReport {
     double largest_move = 0.0;        ///< mm
     std::size_t moves_undone = 0;     ///< planned moves the harm check gave up
     std::size_t move_rounds = 0;      ///< rounds of moves, restoration and check against the input
+    /// Near: patches taken for a dual mesher's bevel across a concave edge and given back to the
+    /// band before the moves (near/concave_bevels.h).
+    std::size_t bevels_dissolved = 0;
 
     /// Mesher artefacts (MeshRepairOptions).
     std::size_t duplicate_faces_removed = 0;  ///< later copies of exact duplicate faces

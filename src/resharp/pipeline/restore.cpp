@@ -14,6 +14,7 @@
 #include "resharp/core/stage_timer.h"
 #include "resharp/curvature/local_height.h"
 #include "resharp/mesh/duplicate_faces.h"
+#include "resharp/near/concave_bevels.h"
 #include "resharp/near/vertex_moves.h"
 #include "resharp/near/vertex_placement.h"
 #include "resharp/restoration/harm_check.h"
@@ -590,6 +591,11 @@ private:
         VertexMoves moves;
         if (choice.placement == VertexPlacement::Near) {
             clock.run(Stage::VertexMoves, [&] {
+                // The moved mesh is segmented as the input is, so its bevels go too.
+                BevelDissolution bevels = without_concave_bevels(surface, input.features,
+                                                                 input.bands, choice.grid, options);
+                report_.bevels_dissolved = bevels.bevels;
+                input.features = std::move(bevels.features);
                 moves = plan_vertex_moves(surface, from, input.features.vertex_patch, input.bands,
                                           rule, options);
             });

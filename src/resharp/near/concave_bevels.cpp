@@ -1,0 +1,201 @@
+#include "resharp/near/concave_bevels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "resharp/core/parallel.h"
+#include "resharp/surfaces/plane_fit.h"
+
+namespace resharp {
+namespace {
+
+/// How far from the edge (in pitches) a bevel's vertices may lie: OpenVDB's lie on a plane
+/// across the corner, its outer rows about 1.4 pitches from the edge (one cell along the face,
+/// one out), and a strip wider than two pitches is a face the part may have.
+constexpr double kBevelReach = 2.0;
+/// The share of a bevel's vertices that may fail that: where it ends at a side of the part, its
+/// last vertices lie in the corner with that side, beside or behind the edge's faces.
+constexpr double kBevelEndShare = 0.1;
+
+/// Per patch id, its vertices (all, and those off the bands). Bound: one pass over the vertices.
+struct PatchMembers {
+    std::vector<std::vector<Index>> all, off_band;
+};
+
+PatchMembers patch_members(const InputSurface& current, const FeatureSegmentation& features,
+                           const BandClassification& bands) {
+    std::vector<std::uint8_t> in_band(current.mesh.vertex_count(), 0);
+    for (Index f = 0; f < current.mesh.face_count(); ++f) {
+        if (bands.face_role[f] == BandRole::None) continue;
+        for (Index v : current.mesh.triangles[f]) in_band[v] = 1;
+    }
+    PatchMembers m;
+    m.all.resize(features.patch_count);
+    m.off_band.resize(features.patch_count);
+    for (Index v = 0; v < current.mesh.vertex_count(); ++v) {
+        const Index p = features.vertex_patch[v];
+        if (p == kNoIndex || p >= features.patch_count) continue;
+        m.all[p].push_back(v);
+        if (!in_band[v]) m.off_band[p].push_back(v);
+    }
+    return m;
+}
+
+/// Per patch id, the other patches that share a face with it, ascending. Bound: one pass over
+/// the faces.
+std::vector<std::vector<Index>> neighbouring_patches(const Mesh& mesh,
+                                                     const FeatureSegmentation& features) {
+    std::vector<std::vector<Index>> around(features.patch_count);
+    for (const auto& t : mesh.triangles) {
+        for (int a = 0; a < 3; ++a) {
+            const Index p = features.vertex_patch[t[a]];
+            const Index q = features.vertex_patch[t[(a + 1) % 3]];
+            if (p == q || p == kNoIndex || q == kNoIndex) continue;
+            if (p >= features.patch_count || q >= features.patch_count) continue;
+            around[p].push_back(q);
+        }
+    }
+    for (std::vector<Index>& list : around) {
+        std::sort(list.begin(), list.end());
+        list.erase(std::unique(list.begin(), list.end()), list.end());
+    }
+    return around;
+}
+
+/// The patches next to p and next to those, but p, ascending: the faces a bevel lies across.
+/// Where the bevel is a few cells wide its cross-section may bend, and segmentation cut it in
+/// two along its length (on a small L-block at pitch 0.5 mm, facets at 32 and 70 degrees to the
+/// floor), each piece next to one of the faces only.
+std::vector<Index> within_two_steps(const std::vector<std::vector<Index>>& around, Index p) {
+    std::vector<Index> reached = around[p];
+    for (Index q : around[p]) reached.insert(reached.end(), around[q].begin(), around[q].end());
+    std::sort(reached.begin(), reached.end());
+    reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
+    reached.erase(std::remove(reached.begin(), reached.end(), p), reached.end());
+    return reached;
+}
+
+/// The plane of the vertices listed, where they lie on it within `scatter` (mm); facing their
+/// normals' side. None with fewer than `min_points`.
+std::optional<PlaneFit> flat_plane(const InputSurface& current, const std::vector<Index>& vertices,
+                                   std::size_t min_points, double scatter) {
+    if (vertices.size() < min_points) return std::nullopt;
+    std::vector<Vec3> points;
+    points.reserve(vertices.size());
+    Vec3 facing = Vec3::Zero();
+    for (Index v : vertices) {
+        points.push_back(current.mesh.positions[v]);
+        facing += current.normals.vertex[v];
+    }
+    std::optional<PlaneFit> fit = fit_plane(points, facing);
+    if (!fit || fit->rms_distance > scatter) return std::nullopt;
+    return fit;
+}
+
+/// Whether patch `bevel` (its plane `own`) lies across the concave edge between two patches of
+/// planes a and b: each two normals part by more than the junction angle but the bevel's faces
+/// the same way as both (it lies across their corner), a's vertices in front of b's plane and b's
+/// in front of a's (the edge is concave), and every vertex of the bevel in front of both planes
+/// (in the corner's empty side) and within kBevelReach pitches of their line.
+bool lies_across(const InputSurface& current, const std::vector<Index>& bevel, const Plane& own,
+                 const PlaneFit& a, const PlaneFit& b, double min_angle_cosine, double tolerance,
+                 double reach) {
+    const Vec3& na = a.plane.normal;
+    const Vec3& nb = b.plane.normal;
+    if (na.dot(nb) >= min_angle_cosine || own.normal.dot(na) <= 0.0 || own.normal.dot(nb) <= 0.0)
+        return false;
+    if (b.plane.signed_distance(a.centroid) < 0.0 || a.plane.signed_distance(b.centroid) < 0.0)
+        return false;
+    const Vec3 direction = na.cross(nb).normalized();
+    // The point of the line nearest the origin: on both planes and normal to the line.
+    Eigen::Matrix3d rows;
+    rows << na.transpose(), nb.transpose(), direction.transpose();
+    const Vec3 on_line = rows.partialPivLu().solve(Vec3(a.plane.offset, b.plane.offset, 0.0));
+    const auto across = std::count_if(bevel.begin(), bevel.end(), [&](Index v) {
+        const Vec3& x = current.mesh.positions[v];
+        if (a.plane.signed_distance(x) < -tolerance || b.plane.signed_distance(x) < -tolerance)
+            return false;
+        const Vec3 off = x - on_line;
+        return (off - off.dot(direction) * direction).norm() <= reach;
+    });
+    return static_cast<double>(across) >=
+           (1.0 - kBevelEndShare) * static_cast<double>(bevel.size());
+}
+
+/// The patch with the most faces around v, none if no face around it has one.
+Index most_faces_around(const Connectivity& connectivity, const std::vector<Index>& face_patch,
+                        Index v) {
+    std::vector<std::pair<Index, int>> counts;  // a ring holds a few patches at most
+    for (Index f : connectivity.faces_around(v)) {
+        const Index p = face_patch[f];
+        if (p == kNoIndex) continue;
+        auto it = std::find_if(counts.begin(), counts.end(), [&](auto& c) { return c.first == p; });
+        if (it == counts.end()) {
+            counts.emplace_back(p, 1);
+        } else {
+            ++it->second;
+        }
+    }
+    Index best = kNoIndex;
+    int most = 0;
+    for (const auto& [p, n] : counts) {
+        if (n > most) best = p, most = n;
+    }
+    return best;
+}
+
+}  // namespace
+
+BevelDissolution without_concave_bevels(const InputSurface& current,
+                                        const FeatureSegmentation& features,
+                                        const BandClassification& bands, const Grid& grid,
+                                        const VertexMoveOptions& options) {
+    const double h = grid.pitch;
+    const double scatter = options.max_scatter_near * h;
+    const auto min_points = static_cast<std::size_t>(options.min_fit_points);
+    const double min_angle_cosine = std::cos(options.junction_angle_deg * std::numbers::pi / 180.0);
+    const PatchMembers members = patch_members(current, features, bands);
+    const std::vector<std::vector<Index>> around = neighbouring_patches(current.mesh, features);
+    const std::size_t patches = features.patch_count;
+    // Each patch's plane as a side (its vertices off the bands, which lie on its face) and as a
+    // bevel (all its vertices: those off the bands run along its middle, on one line, and a
+    // bevel's ends, where it meets the next one's at a corner, part from its plane by a few
+    // hundredths of a pitch).
+    std::vector<std::optional<PlaneFit>> side(patches), whole(patches);
+    for_each_index(patches, 1, [&](std::size_t p) {
+        side[p] = flat_plane(current, members.off_band[p], min_points, scatter);
+        whole[p] = flat_plane(current, members.all[p], min_points, scatter);
+    });
+    std::vector<std::uint8_t> dissolved(patches, 0);
+    for_each_index(patches, 1, [&](std::size_t p) {
+        if (!whole[p]) return;
+        const std::vector<Index> sides = within_two_steps(around, static_cast<Index>(p));
+        for (std::size_t i = 0; i < sides.size() && !dissolved[p]; ++i) {
+            for (std::size_t j = i + 1; j < sides.size() && !dissolved[p]; ++j) {
+                if (!side[sides[i]] || !side[sides[j]]) continue;
+                dissolved[p] =
+                    lies_across(current, members.all[p], whole[p]->plane, *side[sides[i]],
+                                *side[sides[j]], min_angle_cosine, scatter, kBevelReach * h);
+            }
+        }
+    });
+    BevelDissolution r{features, 0};
+    r.bevels = static_cast<std::size_t>(std::count(dissolved.begin(), dissolved.end(), 1));
+    if (r.bevels == 0) return r;
+    for (Index& p : r.features.face_patch) {
+        if (p != kNoIndex && p < patches && dissolved[p]) p = kNoIndex;
+    }
+    for (Index v = 0; v < current.mesh.vertex_count(); ++v) {
+        const Index p = features.vertex_patch[v];
+        if (p != kNoIndex && p < patches && dissolved[p])
+            r.features.vertex_patch[v] =
+                most_faces_around(current.connectivity, r.features.face_patch, v);
+    }
+    return r;
+}
+
+}  // namespace resharp

@@ -1,0 +1,45 @@
+#pragma once
+/// Near-surface restoration, before the moves (issue 14): the bevels a dual mesher leaves along
+/// concave edges, found and given back to the band.
+///
+/// OpenVDB's volumeToMesh finds a crossing by interpolating the signed distance linearly
+/// between voxel centres. Along a concave edge the distance at a centre in the empty corner is
+/// to the edge itself, far larger than to either face, so the crossings come out early and the
+/// cells put their vertices on a plane across the corner, two to three cells wide: across the
+/// floor edge y = 10, z = 16 of a pocket at pitch 0.6 mm, (10.224, 16.824), (10.524, 16.524)
+/// and (10.824, 16.224), the middle one in a cell the true surface does not cross. Segmentation
+/// takes that strip for a narrow face of its own, and the paper's method restores its two
+/// borders: two creases of about 45 degrees half a millimetre off the edge. Dissolved (its
+/// faces and vertices in no patch), its vertices are vertices between patches, which the moves
+/// take onto the junction of the two faces (near/vertex_moves.h).
+
+#include <cstddef>
+
+#include "resharp/near/vertex_moves.h"
+#include "resharp/restoration/input_surface.h"
+#include "resharp/segmentation/feature_segmentation.h"
+
+namespace resharp {
+
+struct BevelDissolution {
+    FeatureSegmentation features;  ///< the segmentation given, the bevels' patches dissolved
+    std::size_t bevels = 0;        ///< patches dissolved
+};
+
+/// Takes the mesh as it stands, its feature segmentation and bands, and the grid its vertices
+/// were placed on; gives the segmentation with every concave bevel's patch dissolved (its faces
+/// in no patch, its vertices in the patch with the most faces around them, none if no other):
+/// a patch whose vertices lie about one plane (within options.max_scatter_near pitches, rms)
+/// between the planes of two patches next to it or next to those (each fitted to its vertices
+/// off the bands, as flat, parting by more than options.junction_angle_deg: a concave edge),
+/// all but a tenth of its vertices (where it ends at the part's sides) in front of both planes
+/// and within two pitches of where they meet. Each patch is judged on the segmentation given,
+/// so the result does not depend on the order they are judged in. Bound: a pass over the
+/// vertices and faces, a plane fit per patch, and per patch a test per pair of the patches
+/// within two steps of it.
+BevelDissolution without_concave_bevels(const InputSurface& current,
+                                        const FeatureSegmentation& features,
+                                        const BandClassification& bands, const Grid& grid,
+                                        const VertexMoveOptions& options = {});
+
+}  // namespace resharp
