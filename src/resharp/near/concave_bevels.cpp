@@ -50,24 +50,29 @@ std::vector<std::uint8_t> strips(const InputSurface& current, const FeatureSegme
     return strip;
 }
 
-/// The vertices of the patches flagged in `wanted` (all, and those off the bands), by patch id;
-/// empty for the others. Bound: a pass over the faces and one over the vertices.
+/// Per vertex, 1 where it is a corner of a band's face.
+std::vector<std::uint8_t> band_vertices(const Mesh& mesh, const BandClassification& bands) {
+    std::vector<std::uint8_t> in_band(mesh.vertex_count(), 0);
+    for (Index f = 0; f < mesh.face_count(); ++f) {
+        if (bands.face_role[f] == BandRole::None) continue;
+        for (Index v : mesh.triangles[f]) in_band[v] = 1;
+    }
+    return in_band;
+}
+
+/// The vertices of the patches flagged in `wanted` (all, and those off the bands: `in_band`
+/// 0), by patch id; empty for the others. Bound: a pass over the vertices.
 struct PatchMembers {
     std::vector<std::vector<Index>> all, off_band;
 };
 
-PatchMembers patch_members(const InputSurface& current, const FeatureSegmentation& features,
-                           const BandClassification& bands,
+PatchMembers patch_members(const Mesh& mesh, const FeatureSegmentation& features,
+                           const std::vector<std::uint8_t>& in_band,
                            const std::vector<std::uint8_t>& wanted) {
-    std::vector<std::uint8_t> in_band(current.mesh.vertex_count(), 0);
-    for (Index f = 0; f < current.mesh.face_count(); ++f) {
-        if (bands.face_role[f] == BandRole::None) continue;
-        for (Index v : current.mesh.triangles[f]) in_band[v] = 1;
-    }
     PatchMembers m;
     m.all.resize(features.patch_count);
     m.off_band.resize(features.patch_count);
-    for (Index v = 0; v < current.mesh.vertex_count(); ++v) {
+    for (Index v = 0; v < mesh.vertex_count(); ++v) {
         const Index p = features.vertex_patch[v];
         if (p >= features.patch_count || !wanted[p]) continue;
         m.all[p].push_back(v);
@@ -192,25 +197,29 @@ BevelDissolution without_concave_bevels(const InputSurface& current,
     const std::size_t patches = features.patch_count;
     const std::vector<std::uint8_t> strip = strips(current, features, h, min_points);
     if (std::find(strip.begin(), strip.end(), 1) == strip.end()) return {features, 0};
+    // A strip's plane as a bevel: all its vertices (those off the bands run along its middle,
+    // on one line, and a bevel's ends, where it meets the next one's at a corner, part from its
+    // plane by a few hundredths of a pitch).
+    const std::vector<std::uint8_t> in_band = band_vertices(current.mesh, bands);
+    const PatchMembers strips_members = patch_members(current.mesh, features, in_band, strip);
+    std::vector<std::optional<PlaneFit>> whole(patches);
+    for_each_index(patches, 1, [&](std::size_t p) {
+        if (strip[p]) whole[p] = flat_plane(current, strips_members.all[p], min_points, scatter);
+    });
     const std::vector<std::vector<Index>> around = neighbouring_patches(current.mesh, features);
-    // The faces a strip may lie across, and every patch that needs its vertices.
+    // The faces a flat strip may lie across, each with its plane as a side (its vertices off
+    // the bands, which lie on its face).
     std::vector<std::vector<Index>> sides(patches);
-    std::vector<std::uint8_t> wanted = strip;
+    std::vector<std::uint8_t> wanted(patches, 0);
     for (std::size_t p = 0; p < patches; ++p) {
-        if (!strip[p]) continue;
+        if (!whole[p]) continue;
         sides[p] = within_two_steps(around, static_cast<Index>(p));
         for (Index q : sides[p]) wanted[q] = 1;
     }
-    const PatchMembers members = patch_members(current, features, bands, wanted);
-    // Each patch's plane as a side (its vertices off the bands, which lie on its face) and as a
-    // bevel (all its vertices: those off the bands run along its middle, on one line, and a
-    // bevel's ends, where it meets the next one's at a corner, part from its plane by a few
-    // hundredths of a pitch).
-    std::vector<std::optional<PlaneFit>> side(patches), whole(patches);
+    const PatchMembers members = patch_members(current.mesh, features, in_band, wanted);
+    std::vector<std::optional<PlaneFit>> side(patches);
     for_each_index(patches, 1, [&](std::size_t p) {
-        if (!wanted[p]) return;
-        side[p] = flat_plane(current, members.off_band[p], min_points, scatter);
-        if (strip[p]) whole[p] = flat_plane(current, members.all[p], min_points, scatter);
+        if (wanted[p]) side[p] = flat_plane(current, members.off_band[p], min_points, scatter);
     });
     std::vector<std::uint8_t> dissolved(patches, 0);
     for_each_index(patches, 1, [&](std::size_t p) {
@@ -220,7 +229,7 @@ BevelDissolution without_concave_bevels(const InputSurface& current,
             for (std::size_t j = i + 1; j < next.size() && !dissolved[p]; ++j) {
                 if (!side[next[i]] || !side[next[j]]) continue;
                 dissolved[p] =
-                    lies_across(current, members.all[p], whole[p]->plane, *side[next[i]],
+                    lies_across(current, strips_members.all[p], whole[p]->plane, *side[next[i]],
                                 *side[next[j]], min_angle_cosine, scatter, kBevelReach * h);
             }
         }
