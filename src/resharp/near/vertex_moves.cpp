@@ -273,9 +273,9 @@ private:
             planes[i] = *fits[i];
         }
         const Vec3& x = current_.mesh.positions[v];
-        if (beyond_ring && count == 3) count = nearest_two_first(x, planes);
+        if (beyond_ring && count == 3) count = nearest_two_first(x, planes, patches);
         if (!flat_enough(std::span(planes.data(), count)))
-            return point_on_curved_junction(v, around, scratch);
+            return point_on_curved_junction(v, std::span(patches.data(), count), scratch);
         const std::optional<Junction> junction = sharp_junction(std::span(planes.data(), count));
         if (!junction) return std::nullopt;
         const Cell reach = junction_reach(input_[v], std::span(planes.data(), count));
@@ -800,17 +800,21 @@ private:
         return {low, low + Vec3::Constant(h)};
     }
 
-    /// The two of three planes nearest x first; gives 2. A vertex between patches that meets
-    /// them only beyond its ring lies in a band several faces wide (a dual mesher's bevel
-    /// across a concave edge, near/concave_bevels.h), and a third face within the fit rings is
-    /// where the bevel ends (the part's side), not a corner of it: the junction of all three
-    /// took the bevel's last cells towards the corner, out of reach.
-    static std::size_t nearest_two_first(const Vec3& x, std::array<PlaneFit, 3>& planes) {
-        const auto farthest = std::max_element(
-            planes.begin(), planes.end(), [&](const PlaneFit& a, const PlaneFit& b) {
-                return std::abs(a.plane.signed_distance(x)) < std::abs(b.plane.signed_distance(x));
-            });
-        std::swap(*farthest, planes[2]);
+    /// The two of three planes nearest x first, their patches with them; gives 2. A vertex
+    /// between patches that meets them only beyond its ring lies in a band several faces wide
+    /// (a dual mesher's bevel across a concave edge, near/concave_bevels.h), and a third face
+    /// within the fit rings is where the bevel ends (the part's side), not a corner of it: the
+    /// junction of all three took the bevel's last cells towards the corner, out of reach.
+    static std::size_t nearest_two_first(const Vec3& x, std::array<PlaneFit, 3>& planes,
+                                         std::array<Index, kMaxSides>& patches) {
+        std::size_t farthest = 0;
+        for (std::size_t i = 1; i < 3; ++i) {
+            if (std::abs(planes[i].plane.signed_distance(x)) >
+                std::abs(planes[farthest].plane.signed_distance(x)))
+                farthest = i;
+        }
+        std::swap(planes[farthest], planes[2]);
+        std::swap(patches[farthest], patches[2]);
         return 2;
     }
 
