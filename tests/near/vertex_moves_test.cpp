@@ -192,16 +192,6 @@ TEST(VertexMoves, SurfaceNetsVerticesBetweenPatchesMoveOntoTheEdge) {
     EXPECT_GE(on_edge, between - between / 20);
 }
 
-/// Per vertex: 1 where it is a corner of an edge or corner triangle.
-std::vector<std::uint8_t> band_vertices(const Mesh& mesh, const BandClassification& bands) {
-    std::vector<std::uint8_t> in_band(mesh.vertex_count(), 0);
-    for (Index f = 0; f < mesh.face_count(); ++f) {
-        if (bands.face_role[f] == BandRole::None) continue;
-        for (Index v : mesh.triangles[f]) in_band[v] = 1;
-    }
-    return in_band;
-}
-
 // A band vertex of a patch whose cell a sharp edge crosses lies off its own face, between the
 // faces (the mean of crossings on both), as a vertex between patches does: it goes onto the
 // edge too, within its cell, where every face around it then lies on one side (its other two

@@ -50,16 +50,6 @@ std::vector<std::uint8_t> strips(const InputSurface& current, const FeatureSegme
     return strip;
 }
 
-/// Per vertex, 1 where it is a corner of a band's face.
-std::vector<std::uint8_t> band_vertices(const Mesh& mesh, const BandClassification& bands) {
-    std::vector<std::uint8_t> in_band(mesh.vertex_count(), 0);
-    for (Index f = 0; f < mesh.face_count(); ++f) {
-        if (bands.face_role[f] == BandRole::None) continue;
-        for (Index v : mesh.triangles[f]) in_band[v] = 1;
-    }
-    return in_band;
-}
-
 /// The vertices of the patches flagged in `wanted` (all, and those off the bands: `in_band`
 /// 0), by patch id; empty for the others. Bound: a pass over the vertices.
 struct PatchMembers {

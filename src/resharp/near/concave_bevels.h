@@ -16,6 +16,7 @@
 #include <cstddef>
 
 #include "resharp/near/vertex_moves.h"
+#include "resharp/restoration/band_classification.h"
 #include "resharp/restoration/input_surface.h"
 #include "resharp/segmentation/feature_segmentation.h"
 

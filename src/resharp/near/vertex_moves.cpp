@@ -197,12 +197,10 @@ public:
                                               : options.max_scatter_near)),
           neighbours_(current.mesh, current.connectivity,
                       rule.placement == VertexPlacement::Midpoint),
-          in_band_(current.mesh.vertex_count(), 0) {
+          in_band_(rule.scope == FitScope::Patches
+                       ? band_vertices(current.mesh, bands)
+                       : std::vector<std::uint8_t>(current.mesh.vertex_count(), 0)) {
         if (rule.scope != FitScope::Patches) return;
-        for (Index f = 0; f < current.mesh.face_count(); ++f) {
-            if (bands.face_role[f] == BandRole::None) continue;
-            for (Index v : current.mesh.triangles[f]) in_band_[v] = 1;
-        }
         if (rule.placement == VertexPlacement::Midpoint) patch_plane_ = whole_patch_planes();
     }
 

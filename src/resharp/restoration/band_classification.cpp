@@ -139,4 +139,13 @@ BandClassification classify_faces(std::vector<std::uint8_t> is_crossing) {
     return b;
 }
 
+std::vector<std::uint8_t> band_vertices(const Mesh& mesh, const BandClassification& bands) {
+    std::vector<std::uint8_t> in_band(mesh.vertex_count(), 0);
+    for (Index f = 0; f < mesh.face_count(); ++f) {
+        if (bands.face_role[f] == BandRole::None) continue;
+        for (Index v : mesh.triangles[f]) in_band[v] = 1;
+    }
+    return in_band;
+}
+
 }  // namespace resharp

@@ -84,4 +84,7 @@ BandClassification drop_smooth_crossings(const Mesh& mesh, const Connectivity& c
 /// builds the oracle's classification the same way.
 BandClassification classify_faces(std::vector<std::uint8_t> is_crossing);
 
+/// Per vertex of `mesh` (#V): 1 where it is a corner of an edge or corner triangle of `bands`.
+std::vector<std::uint8_t> band_vertices(const Mesh& mesh, const BandClassification& bands);
+
 }  // namespace resharp
