@@ -27,7 +27,7 @@ constexpr double kStripRows = 4.0;
 /// Per patch id, whether it could be a strip a few rows wide: no more vertices than kStripRows
 /// per pitch of its bounding box's diagonal (a face of side L has about (L / h)^2), and enough
 /// for a plane. Cheap (a pass over the vertices), and true of far fewer patches than the fits it
-/// spares: on mech by surface nets the fits of every patch cost restore() 3.7 % of its
+/// spares: on mech by surface nets the fits of every patch cost restore() 3.6 % of its
 /// instructions.
 std::vector<std::uint8_t> strips(const InputSurface& current, const FeatureSegmentation& features,
                                  double h, std::size_t min_points) {
@@ -94,7 +94,7 @@ std::vector<std::vector<Index>> neighbouring_patches(const Mesh& mesh,
 
 /// The patches next to p and next to those, but p, ascending: the faces a bevel lies across.
 /// Where the bevel is a few cells wide its cross-section may bend, and segmentation cut it in
-/// two along its length (on a small L-block at pitch 0.5 mm, facets at 32 and 70 degrees to the
+/// two along its length (on a small L-block at pitch 0.5 mm, facets at 58 and 20 degrees to the
 /// floor), each piece next to one of the faces only.
 std::vector<Index> within_two_steps(const std::vector<std::vector<Index>>& around, Index p) {
     std::vector<Index> reached = around[p];
@@ -125,8 +125,8 @@ std::optional<PlaneFit> flat_plane(const InputSurface& current, const std::vecto
 /// Whether patch `bevel` (its plane `own`) lies across the concave edge between two patches of
 /// planes a and b: each two normals part by more than the junction angle but the bevel's faces
 /// the same way as both (it lies across their corner), a's vertices in front of b's plane and b's
-/// in front of a's (the edge is concave), and every vertex of the bevel in front of both planes
-/// (in the corner's empty side) and within kBevelReach pitches of their line.
+/// in front of a's (the edge is concave), and all but kBevelEndShare of the bevel's vertices in
+/// front of both planes (in the corner's empty side) and within `reach` of their line.
 bool lies_across(const InputSurface& current, const std::vector<Index>& bevel, const Plane& own,
                  const PlaneFit& a, const PlaneFit& b, double min_angle_cosine, double tolerance,
                  double reach) {
