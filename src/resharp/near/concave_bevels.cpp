@@ -152,20 +152,11 @@ bool lies_across(const InputSurface& current, const std::vector<Index>& bevel, c
            (1.0 - kBevelEndShare) * static_cast<double>(bevel.size());
 }
 
-/// The patch with the most faces around v, none if no face around it has one.
+/// The patch with the most faces around v (the first met of those tied), none if no face
+/// around it has one. `counts`: scratch, reused from vertex to vertex.
 Index most_faces_around(const Connectivity& connectivity, const std::vector<Index>& face_patch,
-                        Index v) {
-    std::vector<std::pair<Index, int>> counts;  // a ring holds a few patches at most
-    for (Index f : connectivity.faces_around(v)) {
-        const Index p = face_patch[f];
-        if (p == kNoIndex) continue;
-        auto it = std::find_if(counts.begin(), counts.end(), [&](auto& c) { return c.first == p; });
-        if (it == counts.end()) {
-            counts.emplace_back(p, 1);
-        } else {
-            ++it->second;
-        }
-    }
+                        Index v, std::vector<std::pair<Index, int>>& counts) {
+    count_ring_patches(connectivity, face_patch, v, counts);
     Index best = kNoIndex;
     int most = 0;
     for (const auto& [p, n] : counts) {
@@ -230,11 +221,12 @@ BevelDissolution without_concave_bevels(const InputSurface& current,
     for (Index& p : r.features.face_patch) {
         if (p != kNoIndex && p < patches && dissolved[p]) p = kNoIndex;
     }
+    std::vector<std::pair<Index, int>> counts;
     for (Index v = 0; v < current.mesh.vertex_count(); ++v) {
         const Index p = features.vertex_patch[v];
         if (p != kNoIndex && p < patches && dissolved[p])
             r.features.vertex_patch[v] =
-                most_faces_around(current.connectivity, r.features.face_patch, v);
+                most_faces_around(current.connectivity, r.features.face_patch, v, counts);
     }
     return r;
 }

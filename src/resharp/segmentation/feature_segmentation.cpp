@@ -656,19 +656,7 @@ std::vector<Index> label_vertices(const Mesh& mesh, const Connectivity& c,
     std::vector<double> lowest(count, std::numeric_limits<double>::infinity());
     std::vector<Index> tied;
     std::vector<std::pair<Index, int>> counts;
-    auto count_votes = [&](Index v) {
-        counts.clear();
-        for (Index f : c.faces_around(v)) {
-            const Index p = face_patch[f];
-            if (p == kNoIndex) continue;
-            auto it =
-                std::find_if(counts.begin(), counts.end(), [&](auto& e) { return e.first == p; });
-            if (it == counts.end())
-                counts.emplace_back(p, 1);
-            else
-                ++it->second;
-        }
-    };
+    auto count_votes = [&](Index v) { count_ring_patches(c, face_patch, v, counts); };
     for (Index v = 0; v < mesh.vertex_count(); ++v) {
         const double z = mesh.positions[v].z();
         if (single[v] != kMixedRing) {
@@ -808,6 +796,20 @@ std::vector<Index> refine_border_labels(const Mesh& mesh, const Connectivity& c,
 }
 
 }  // namespace
+
+void count_ring_patches(const Connectivity& connectivity, const std::vector<Index>& face_patch,
+                        Index v, std::vector<std::pair<Index, int>>& counts) {
+    counts.clear();
+    for (Index f : connectivity.faces_around(v)) {
+        const Index p = face_patch[f];
+        if (p == kNoIndex) continue;
+        auto it = std::find_if(counts.begin(), counts.end(), [&](auto& e) { return e.first == p; });
+        if (it == counts.end())
+            counts.emplace_back(p, 1);
+        else
+            ++it->second;
+    }
+}
 
 Vec3 patch_mean_normal(const Mesh& mesh, const Connectivity& c, const std::vector<Vec3>& normals,
                        const std::vector<Index>& face_patch, Index v, Index p, Index away) {

@@ -6,6 +6,7 @@
 /// greedily, and every vertex joins the patch with the most faces in its one-ring.
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "resharp/mesh/connectivity.h"
@@ -63,6 +64,12 @@ struct FeatureSegmentation {
     std::size_t tiny_joined = 0;
     std::size_t merges = 0;  ///< greedy merges of over-segmented patches
 };
+
+/// Into `counts` (cleared first): the feature patches of the faces around v (face_patch, #F;
+/// kNoIndex left out), in the order first met, each with how many of those faces it has. §4
+/// step 4 labels a vertex with the patch that has the most.
+void count_ring_patches(const Connectivity& connectivity, const std::vector<Index>& face_patch,
+                        Index v, std::vector<std::pair<Index, int>>& counts);
 
 /// Mean of the unit normals of v's ring faces in patch p (face_patch, #F), leaving out faces that
 /// touch vertex `away` when one is given; normalised, zero if no face qualifies. Unweighted:
