@@ -57,6 +57,14 @@ constexpr double kEdgeOvershoot = 0.25;
 /// lie inside it by about its sag over a cell, h / 8r pitches (0.02 at r = 6 h), and over the
 /// fit rings the surface's own terms beyond the second add as much again.
 constexpr double kCurvedJunctionScatter = 0.03;
+/// Near: a fit is a flat face's plane where its points scatter about it by at most this (root
+/// mean square, in pitches). Cell means of crossings on a plane lie on it to rounding; where a
+/// fit scatters more but most of its points lie on one plane to this (fit_plane_of_most()), the
+/// rest are vertices the mesher put off the face, and that plane is the face's: OpenVDB's beside
+/// a concave edge lie up to a quarter of a pitch off it over two or three cells, and a plane
+/// through them all leans by degrees (chamfered_block turned at 100 cells, a pocket's wall:
+/// 5.7 degrees).
+constexpr double kFlatFaceScatter = 0.002;
 /// ... and the surface must fit them this many times as closely as their plane: a bent face
 /// explains its vertices' scatter about the plane, a flat face that took in a few vertices off
 /// it (a hole's rim) does not, and its surface, bent towards them, meets the others off the edge.
@@ -90,6 +98,7 @@ struct Scratch {
     /// How many of `reached` lie within the fit rings: the vertex's own plane is fitted to
     /// these, and so is what is compared with it, even after the others are gathered farther.
     std::size_t fit_reached = 0;
+    TrimScratch trim;  ///< fit_plane_of_most()'s
 };
 
 /// The vertices that share a face with each vertex, each once, in the order
@@ -486,6 +495,8 @@ private:
         Fits fits;
         const std::size_t fitted = fit_sides(v, around, fits, scratch);
         const bool near_band = in_band_[v] && rule_.placement == VertexPlacement::Near;
+        if (near_band && fits[0] && !is_flat_face(*fits[0]))
+            refit_own_farther(v, around[0], fits[0], scratch);
         own_fitted_farther = near_band && !fits[0];
         if (!fits[0] && !near_band) return 0;
         if (near_band && (fitted < 2 || !fits[0])) {
@@ -521,6 +532,23 @@ private:
         return fitted;
     }
 
+    /// Whether a fit is a flat face's plane (kFlatFaceScatter).
+    bool is_flat_face(const PlaneFit& fit) const {
+        return fit.rms_distance <= kFlatFaceScatter * rule_.grid.pitch;
+    }
+
+    /// Near, a band vertex's own plane that is not a flat face's within the fit rings: fitted
+    /// again within the other side fit rings, and taken where that is a flat face's. Beside a
+    /// concave edge OpenVDB's error reaches two or three cells, and within the fit rings its
+    /// face's vertices off the band may be mostly those it put off the face (chamfered_block
+    /// turned at 100 cells, a pocket's wall: 4 of 17 on the face, 31 of 46 within five rings).
+    void refit_own_farther(Index v, Index own, std::optional<PlaneFit>& fit,
+                           Scratch& scratch) const {
+        gather_rings(neighbours_, v, options_.other_side_fit_rings, kMaxOtherSideGathered, scratch);
+        const std::optional<PlaneFit> wide = fit_side(own, scratch);
+        if (wide && is_flat_face(*wide)) fit = wide;
+    }
+
     /// Fits again, within the other side fit rings around v, the planes of `patches` that have
     /// none: a band off the grid axes winds two or three faces wide, and within the fit rings a
     /// side across it often has too few vertices off the band.
@@ -543,7 +571,7 @@ private:
             scratch.points.push_back(current_.mesh.positions[j]);
             facing += current_.normals.vertex[j];
         }
-        const std::optional<PlaneFit> fit = trusted_fit(scratch.points, facing);
+        const std::optional<PlaneFit> fit = trusted_fit(scratch.points, facing, scratch);
         if (!fit) return 0;
         sides[0] = {kNoIndex, *fit};
         return 1;
@@ -596,7 +624,7 @@ private:
     std::optional<PlaneFit> fit_side(Index patch, Scratch& scratch) const {
         if (has_whole_plane(patch)) return patch_plane_[patch];
         const Vec3 facing = collect_side_points(patch, scratch);
-        return trusted_fit(scratch.points, facing);
+        return trusted_fit(scratch.points, facing, scratch);
     }
 
     /// Midpoint: whether `patch` has a plane as a whole (whole_patch_planes()).
@@ -711,9 +739,21 @@ private:
         return facing;
     }
 
-    std::optional<PlaneFit> trusted_fit(std::span<const Vec3> points, const Vec3& facing) const {
-        if (points.size() < static_cast<std::size_t>(options_.min_fit_points)) return std::nullopt;
+    /// The plane of the points where they lie on one as one face's vertices do: within the
+    /// scatter allowed, and for a midpoint mesh not bent. Near: where most lie on a plane and a
+    /// few off it (kFlatFaceScatter), that plane.
+    std::optional<PlaneFit> trusted_fit(std::span<const Vec3> points, const Vec3& facing,
+                                        Scratch& scratch) const {
+        const auto min_points = static_cast<std::size_t>(options_.min_fit_points);
+        if (points.size() < min_points) return std::nullopt;
         std::optional<PlaneFit> fit = fit_plane(points, facing);
+        if (fit && rule_.placement == VertexPlacement::Near &&
+            fit->rms_distance > on_plane_tolerance()) {
+            const std::optional<PlaneFit> most =
+                fit_plane_of_most(points, facing, *fit, kFlatFaceScatter * rule_.grid.pitch,
+                                  min_points, scratch.trim);
+            if (most) fit = most;
+        }
         if (!fit || fit->rms_distance > max_scatter_) return std::nullopt;
         if (rule_.placement == VertexPlacement::Midpoint && is_bent(points, *fit))
             return std::nullopt;

@@ -32,6 +32,34 @@ std::optional<PlaneFit> fit_plane(std::span<const Vec3> points, const Vec3& faci
     return fit;
 }
 
+std::optional<PlaneFit> fit_plane_of_most(std::span<const Vec3> points, const Vec3& facing,
+                                          const PlaneFit& first, double exact,
+                                          std::size_t min_points, TrimScratch& scratch) {
+    constexpr int kRounds = 3;
+    const std::size_t least = std::max(min_points, (points.size() + 1) / 2);
+    if (points.size() < least || least < 3) return std::nullopt;
+    PlaneFit fit = first;
+    for (int round = 0; round < kRounds; ++round) {
+        scratch.distances.clear();
+        for (const Vec3& p : points)
+            scratch.distances.push_back(std::abs(fit.plane.signed_distance(p)));
+        scratch.sorted = scratch.distances;
+        const auto middle = scratch.sorted.begin() + static_cast<std::ptrdiff_t>(points.size() / 2);
+        std::nth_element(scratch.sorted.begin(), middle, scratch.sorted.end());
+        const double cut = std::max(2.0 * *middle, exact);
+        scratch.kept.clear();
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            if (scratch.distances[i] <= cut) scratch.kept.push_back(points[i]);
+        }
+        if (scratch.kept.size() < least) return std::nullopt;
+        const std::optional<PlaneFit> next = fit_plane(scratch.kept, facing);
+        if (!next) return std::nullopt;
+        fit = *next;
+        if (fit.rms_distance <= exact) return fit;
+    }
+    return std::nullopt;
+}
+
 std::optional<HeightFit> fit_height_quadric(std::span<const Vec3> points, const Plane& plane,
                                             const Vec3& at) {
     constexpr std::size_t kMinPoints = 10;  // six unknowns, with some to spare against noise

@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <span>
+#include <vector>
 
 #include "resharp/core/types.h"
 #include "resharp/surfaces/junction.h"
@@ -31,6 +32,23 @@ struct PlaneFit {
 /// normal ends up within 90 degrees of it). None when the points do not span a plane (fewer
 /// than three, or all on one line within rounding).
 std::optional<PlaneFit> fit_plane(std::span<const Vec3> points, const Vec3& facing);
+
+/// The plane most of the points lie on, where a few lie off it: a flat face's vertices with
+/// those a mesher put off the face beside its edges (OpenVDB's, where it interpolates the
+/// signed distance across a concave corner, up to a quarter of a pitch off over two or three
+/// cells). From `first`, their least-squares plane, the points within twice the median distance
+/// of the last plane (or within `exact`) are fitted again, at most three times, until they scatter
+/// about their plane by at most `exact` (root mean square); that fit, of the points kept, is given.
+/// None where that does not happen, or where fewer than half the points or fewer than `min_points`
+/// would be kept: points on a curved face lie on no plane, and a narrow strip of them near one does
+/// not hold half. `scratch` is reused from call to call.
+struct TrimScratch {
+    std::vector<double> distances, sorted;
+    std::vector<Vec3> kept;
+};
+std::optional<PlaneFit> fit_plane_of_most(std::span<const Vec3> points, const Vec3& facing,
+                                          const PlaneFit& first, double exact,
+                                          std::size_t min_points, TrimScratch& scratch);
 
 /// The point of a second-order surface fitted to points over the point `at`: the points' heights
 /// over `plane` fitted by least squares as w = c0 + c1 u + c2 v + c3 u^2 + c4 u v + c5 v^2 in a
