@@ -38,6 +38,60 @@ TEST(PlaneFit, PointsOnALineGiveNoPlane) {
     EXPECT_FALSE(fit_plane(line, Vec3::UnitZ()));
 }
 
+// A wall x = 0 whose points near the floor z = 0 lie off it towards a concave corner, as
+// OpenVDB leaves them there (up to a quarter of a unit over the lowest rows): the least-squares
+// plane leans, the plane most of them lie on is the wall's, to rounding.
+TEST(PlaneOfMost, FindsTheWallUnderPointsAMesherPutOffIt) {
+    std::vector<Vec3> points;
+    for (int i = 0; i < 6; ++i) {
+        for (int k = 0; k < 8; ++k) {
+            const double z = 0.2 + 0.5 * k;
+            const double off = z < 1.0 ? 0.25 * (1.0 - z) : 0.0;  // the lowest two rows
+            points.emplace_back(off, 0.5 * i, z);
+        }
+    }
+    const std::optional<PlaneFit> first = fit_plane(points, Vec3::UnitX());
+    ASSERT_TRUE(first);
+    EXPECT_GT(first->rms_distance, 0.02);
+    EXPECT_GT(std::abs(first->plane.normal.z()), 0.02);  // leans towards the corner
+    std::vector<Vec3> scratch;
+    const std::optional<PlaneFit> most =
+        fit_plane_of_most(points, Vec3::UnitX(), *first, 1e-6, 6, scratch);
+    ASSERT_TRUE(most);
+    EXPECT_LT(most->rms_distance, 1e-9);
+    EXPECT_TRUE(most->plane.normal.isApprox(Vec3::UnitX(), 1e-9));
+    EXPECT_NEAR(most->plane.offset, 0.0, 1e-9);
+}
+
+// Points of a curved face lie on no plane, however many are dropped: cylinders of radius 10
+// and 100 over 3 units either way (a lattice of pitch 0.5), which a plane leaves by 0.45 and
+// 0.045 at the rim, against a bound of a thousandth of that pitch's double.
+TEST(PlaneOfMost, FindsNoneOnACylinder) {
+    for (const double r : {10.0, 100.0}) {
+        const std::vector<Vec3> points = cylinder_patch(r, 3.0, 0.5);
+        const std::optional<PlaneFit> first = fit_plane(points, Vec3::UnitZ());
+        ASSERT_TRUE(first);
+        std::vector<Vec3> scratch;
+        EXPECT_FALSE(fit_plane_of_most(points, Vec3::UnitZ(), *first, 1e-3, 6, scratch)) << r;
+    }
+}
+
+// Fewer than half the points on the plane: no plane of most.
+TEST(PlaneOfMost, NeedsHalfThePointsOnThePlane) {
+    std::vector<Vec3> points;
+    for (int i = 0; i < 8; ++i) {
+        for (int j = 0; j < 8; ++j) {
+            const double off =
+                j < 5 ? 0.1 * (5 - j) * (1 + (i % 3)) : 0.0;  // five rows of eight off
+            points.emplace_back(0.5 * i, 0.5 * j, off);
+        }
+    }
+    const std::optional<PlaneFit> first = fit_plane(points, Vec3::UnitZ());
+    ASSERT_TRUE(first);
+    std::vector<Vec3> scratch;
+    EXPECT_FALSE(fit_plane_of_most(points, Vec3::UnitZ(), *first, 1e-6, 6, scratch));
+}
+
 // On a cylinder of radius 10 sampled 3 units either way, a plane leaves the surface by its sag
 // (0.45 at the rim); the second-order height fit finds the surface over any point to the
 // cylinder's fourth-order terms.

@@ -65,6 +65,17 @@ constexpr double kCurvedJunctionScatter = 0.03;
 /// through them all leans by degrees (chamfered_block turned at 100 cells, a pocket's wall:
 /// 5.7 degrees).
 constexpr double kFlatFaceScatter = 0.002;
+/// Near: a fit its points lie on exactly (within on_plane_tolerance()) is taken only where they
+/// spread over the plane at least this much (in_plane_spread()): near a band a patch's
+/// vertices within the fit rings may be a row and one vertex beside it (pocketed block by
+/// surface nets: five along the bottom edge and one a row in, whose plane leans 12 degrees and
+/// took a vertex beside it to 0.12 mm below the bottom once the side's plane was its face's).
+constexpr double kMinExactFitSpread = 0.05;
+/// Near: a vertex between two patches goes onto their junction only where its normal lies
+/// within this (cosine) of the plane across the junction line: one whose normal runs along the
+/// line lies on a third face at the end of the edge (a corner of the tilted wedge by surface
+/// nets: 0.92, its junction point half a millimetre off the solid).
+constexpr double kMaxNormalAlongJunction = 0.5;
 /// ... and the surface must fit them this many times as closely as their plane: a bent face
 /// explains its vertices' scatter about the plane, a flat face that took in a few vertices off
 /// it (a hole's rim) does not, and its surface, bent towards them, meets the others off the edge.
@@ -98,7 +109,6 @@ struct Scratch {
     /// How many of `reached` lie within the fit rings: the vertex's own plane is fitted to
     /// these, and so is what is compared with it, even after the others are gathered farther.
     std::size_t fit_reached = 0;
-    TrimScratch trim;  ///< fit_plane_of_most()'s
 };
 
 /// The vertices that share a face with each vertex, each once, in the order
@@ -211,6 +221,7 @@ public:
                        : std::vector<std::uint8_t>(current.mesh.vertex_count(), 0)) {
         if (rule.scope != FitScope::Patches) return;
         if (rule.placement == VertexPlacement::Midpoint) patch_plane_ = whole_patch_planes();
+        if (rule.placement == VertexPlacement::Near) flat_face_ = flat_faces();
     }
 
     /// Where v may go; nothing if it stays.
@@ -286,6 +297,7 @@ private:
         const std::optional<Junction> junction = sharp_junction(std::span(planes.data(), count));
         if (!junction) return std::nullopt;
         const Cell reach = junction_reach(input_[v], std::span(planes.data(), count));
+        if (count == 2 && turns_along(v, planes[0].plane, planes[1].plane)) return std::nullopt;
         const Vec3 y = nearest_to_cell(
             x, [&](const Vec3& p) { return junction->projection(p); }, reach);
         // A cell-mean vertex may be wrong by its cell and no more. Where the edge passes
@@ -495,7 +507,7 @@ private:
         Fits fits;
         const std::size_t fitted = fit_sides(v, around, fits, scratch);
         const bool near_band = in_band_[v] && rule_.placement == VertexPlacement::Near;
-        if (near_band && fits[0] && !is_flat_face(*fits[0]))
+        if (near_band && fits[0] && !is_flat_fit(*fits[0]))
             refit_own_farther(v, around[0], fits[0], scratch);
         own_fitted_farther = near_band && !fits[0];
         if (!fits[0] && !near_band) return 0;
@@ -533,7 +545,7 @@ private:
     }
 
     /// Whether a fit is a flat face's plane (kFlatFaceScatter).
-    bool is_flat_face(const PlaneFit& fit) const {
+    bool is_flat_fit(const PlaneFit& fit) const {
         return fit.rms_distance <= kFlatFaceScatter * rule_.grid.pitch;
     }
 
@@ -546,7 +558,7 @@ private:
                            Scratch& scratch) const {
         gather_rings(neighbours_, v, options_.other_side_fit_rings, kMaxOtherSideGathered, scratch);
         const std::optional<PlaneFit> wide = fit_side(own, scratch);
-        if (wide && is_flat_face(*wide)) fit = wide;
+        if (wide && is_flat_fit(*wide)) fit = wide;
     }
 
     /// Fits again, within the other side fit rings around v, the planes of `patches` that have
@@ -571,7 +583,7 @@ private:
             scratch.points.push_back(current_.mesh.positions[j]);
             facing += current_.normals.vertex[j];
         }
-        const std::optional<PlaneFit> fit = trusted_fit(scratch.points, facing, scratch);
+        const std::optional<PlaneFit> fit = trusted_fit(scratch.points, facing);
         if (!fit) return 0;
         sides[0] = {kNoIndex, *fit};
         return 1;
@@ -619,12 +631,27 @@ private:
     }
 
     /// The plane of `patch` through its gathered vertices. Near: only vertices off the bands,
-    /// which lie on their surface; band vertices are what is to be corrected.
+    /// which lie on their surface; band vertices are what is to be corrected; and on a flat face
+    /// (flat_faces()) whose gathered vertices do not all lie on one plane, the face's plane where
+    /// at least half of them lie on it (to kFlatFaceScatter): the rest are vertices the mesher
+    /// put off the face.
     /// Midpoint: the plane of the whole patch where it has one (whole_patch_planes()).
     std::optional<PlaneFit> fit_side(Index patch, Scratch& scratch) const {
         if (has_whole_plane(patch)) return patch_plane_[patch];
         const Vec3 facing = collect_side_points(patch, scratch);
-        return trusted_fit(scratch.points, facing, scratch);
+        const std::optional<PlaneFit> fit = trusted_fit(scratch.points, facing);
+        if (!fit || fit->rms_distance <= on_plane_tolerance() || !is_flat_face(patch)) return fit;
+        const Plane& face = flat_face_[patch]->plane;
+        const double near = kFlatFaceScatter * rule_.grid.pitch;
+        const auto on =
+            std::count_if(scratch.points.begin(), scratch.points.end(),
+                          [&](const Vec3& q) { return std::abs(face.signed_distance(q)) <= near; });
+        return 2 * static_cast<std::size_t>(on) >= scratch.points.size() ? flat_face_[patch] : fit;
+    }
+
+    /// Near: whether `patch` is a flat face (flat_faces()).
+    bool is_flat_face(Index patch) const {
+        return !flat_face_.empty() && flat_face_[patch].has_value();
     }
 
     /// Midpoint: whether `patch` has a plane as a whole (whole_patch_planes()).
@@ -652,6 +679,38 @@ private:
         for_each_index(members.size(), 1,
                        [&](std::size_t p) { planes[p] = whole_patch_plane(members[p]); });
         return planes;
+    }
+
+    /// Near: per patch id, the plane most of its vertices off the bands lie on, to
+    /// kFlatFaceScatter (fit_plane_of_most()), where there is one: a flat face, whose vertices a
+    /// mesher may have put off it beside its edges; none on a curved patch. Taken for the whole
+    /// face, not around each vertex: there a few vertices of a curved face may lie on a plane by
+    /// chance (down a bore of radius 3.4 pitches along a grid axis, surface nets' columns; with
+    /// the plane most of the points around each vertex lay on, cone_part aligned at 100 cells
+    /// had its Edge Chamfer Distance 8.1e-5 -> 4.1e-4). Bound: a pass over the vertices, and per
+    /// patch a plane fit and at most about seven more.
+    std::vector<std::optional<PlaneFit>> flat_faces() const {
+        const std::vector<std::vector<Index>> members = off_band_members();
+        std::vector<std::optional<PlaneFit>> flat(members.size());
+        const auto min_points = static_cast<std::size_t>(options_.min_fit_points);
+        const double exact = kFlatFaceScatter * rule_.grid.pitch;
+        for_each_index(members.size(), 1, [&](std::size_t p) {
+            if (members[p].size() < min_points) return;
+            std::vector<Vec3> points;
+            points.reserve(members[p].size());
+            Vec3 facing = Vec3::Zero();
+            for (Index v : members[p]) {
+                points.push_back(current_.mesh.positions[v]);
+                facing += current_.normals.vertex[v];
+            }
+            const std::optional<PlaneFit> fit = fit_plane(points, facing);
+            if (!fit) return;
+            std::vector<Vec3> kept;
+            flat[p] = fit->rms_distance <= exact
+                          ? fit
+                          : fit_plane_of_most(points, facing, *fit, exact, min_points, kept);
+        });
+        return flat;
     }
 
     /// Per patch id, its vertices off the bands, ascending. Bound: one pass over the vertices.
@@ -739,22 +798,13 @@ private:
         return facing;
     }
 
-    /// The plane of the points where they lie on one as one face's vertices do: within the
-    /// scatter allowed, and for a midpoint mesh not bent. Near: where most lie on a plane and a
-    /// few off it (kFlatFaceScatter), that plane.
-    std::optional<PlaneFit> trusted_fit(std::span<const Vec3> points, const Vec3& facing,
-                                        Scratch& scratch) const {
-        const auto min_points = static_cast<std::size_t>(options_.min_fit_points);
-        if (points.size() < min_points) return std::nullopt;
+    std::optional<PlaneFit> trusted_fit(std::span<const Vec3> points, const Vec3& facing) const {
+        if (points.size() < static_cast<std::size_t>(options_.min_fit_points)) return std::nullopt;
         std::optional<PlaneFit> fit = fit_plane(points, facing);
-        if (fit && rule_.placement == VertexPlacement::Near &&
-            fit->rms_distance > on_plane_tolerance()) {
-            const std::optional<PlaneFit> most =
-                fit_plane_of_most(points, facing, *fit, kFlatFaceScatter * rule_.grid.pitch,
-                                  min_points, scratch.trim);
-            if (most) fit = most;
-        }
         if (!fit || fit->rms_distance > max_scatter_) return std::nullopt;
+        if (rule_.placement == VertexPlacement::Near && fit->rms_distance <= on_plane_tolerance() &&
+            in_plane_spread(points, *fit) < kMinExactFitSpread)
+            return std::nullopt;
         if (rule_.placement == VertexPlacement::Midpoint && is_bent(points, *fit))
             return std::nullopt;
         return fit;
@@ -854,6 +904,14 @@ private:
         std::swap(planes[farthest], planes[2]);
         std::swap(patches[farthest], patches[2]);
         return 2;
+    }
+
+    /// Whether v's surface turns along the junction line of planes a and b, not across it: its
+    /// normal runs along the line by more than kMaxNormalAlongJunction (a third face there).
+    bool turns_along(Index v, const Plane& a, const Plane& b) const {
+        const Vec3 along = a.normal.cross(b.normal).normalized();
+        return std::abs(current_.normals.vertex[v].normalized().dot(along)) >
+               kMaxNormalAlongJunction;
     }
 
     /// How far a vertex between patches may go towards the junction of `planes`: its input
@@ -970,6 +1028,8 @@ private:
     std::vector<std::uint8_t> in_band_;  ///< per vertex: a corner of an edge or corner triangle
     /// Midpoint, patch scope: per patch id, whole_patch_planes(); empty otherwise.
     std::vector<std::optional<PlaneFit>> patch_plane_;
+    /// Near, patch scope: per patch id, flat_faces(); empty otherwise.
+    std::vector<std::optional<PlaneFit>> flat_face_;
 };
 
 void validate(const Grid& grid, const VertexMoveOptions& options) {

@@ -4,6 +4,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "resharp/surfaces/local_quadric.h"
 
@@ -32,32 +33,73 @@ std::optional<PlaneFit> fit_plane(std::span<const Vec3> points, const Vec3& faci
     return fit;
 }
 
+namespace {
+
+/// The points' spread within the plane of `fit`: their variances along its two principal
+/// directions, ascending, and the direction of the smaller.
+struct SpreadInPlane {
+    Eigen::Vector2d variances;
+    Vec3 across;
+};
+
+SpreadInPlane spread_in_plane(std::span<const Vec3> points, const PlaneFit& fit) {
+    const Eigen::Matrix3d frame = tangent_frame(fit.plane.normal);
+    Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();
+    for (const Vec3& p : points) {
+        const Vec3 d = p - fit.centroid;
+        const Eigen::Vector2d q(frame.col(0).dot(d), frame.col(1).dot(d));
+        covariance += q * q.transpose();
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver(covariance);
+    const Eigen::Vector2d across = solver.eigenvectors().col(0);
+    return {solver.eigenvalues(), across.x() * frame.col(0) + across.y() * frame.col(1)};
+}
+
+/// Whether the points lie on at most two lines across the smaller of their principal
+/// directions in the plane: two values of that coordinate or fewer, `gap` apart. Any two
+/// parallel lines of points lie in one plane, which then says nothing of a face.
+bool on_two_lines(std::span<const Vec3> points, const PlaneFit& fit, double gap) {
+    const Vec3 across = spread_in_plane(points, fit).across;
+    std::vector<double> values;
+    values.reserve(points.size());
+    for (const Vec3& p : points) values.push_back(across.dot(p - fit.centroid));
+    std::sort(values.begin(), values.end());
+    std::size_t distinct = values.empty() ? 0 : 1;
+    for (std::size_t i = 1; i < values.size(); ++i) distinct += values[i] - values[i - 1] > gap;
+    return distinct <= 2;
+}
+
+}  // namespace
+
+double in_plane_spread(std::span<const Vec3> points, const PlaneFit& fit) {
+    const Eigen::Vector2d variances = spread_in_plane(points, fit).variances;
+    return variances[1] > 0.0 ? variances[0] / variances[1] : 0.0;
+}
+
 std::optional<PlaneFit> fit_plane_of_most(std::span<const Vec3> points, const Vec3& facing,
                                           const PlaneFit& first, double exact,
-                                          std::size_t min_points, TrimScratch& scratch) {
-    constexpr int kRounds = 3;
-    const std::size_t least = std::max(min_points, (points.size() + 1) / 2);
-    if (points.size() < least || least < 3) return std::nullopt;
+                                          std::size_t min_points, std::vector<Vec3>& kept) {
+    const std::size_t least = std::max<std::size_t>({min_points, (points.size() + 1) / 2, 3});
+    kept.assign(points.begin(), points.end());
     PlaneFit fit = first;
-    for (int round = 0; round < kRounds; ++round) {
-        scratch.distances.clear();
-        for (const Vec3& p : points)
-            scratch.distances.push_back(std::abs(fit.plane.signed_distance(p)));
-        scratch.sorted = scratch.distances;
-        const auto middle = scratch.sorted.begin() + static_cast<std::ptrdiff_t>(points.size() / 2);
-        std::nth_element(scratch.sorted.begin(), middle, scratch.sorted.end());
-        const double cut = std::max(2.0 * *middle, exact);
-        scratch.kept.clear();
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            if (scratch.distances[i] <= cut) scratch.kept.push_back(points[i]);
-        }
-        if (scratch.kept.size() < least) return std::nullopt;
-        const std::optional<PlaneFit> next = fit_plane(scratch.kept, facing);
+    // Bound: each round drops a tenth of the points kept, one at least, and the rounds end
+    // before fewer than half are left: about seven rounds.
+    while (fit.rms_distance > exact) {
+        const std::size_t keep = kept.size() - std::max<std::size_t>(1, kept.size() / 10);
+        if (keep < least) return std::nullopt;
+        const Plane plane = fit.plane;
+        std::nth_element(kept.begin(), kept.begin() + static_cast<std::ptrdiff_t>(keep), kept.end(),
+                         [&](const Vec3& a, const Vec3& b) {
+                             return std::abs(plane.signed_distance(a)) <
+                                    std::abs(plane.signed_distance(b));
+                         });
+        kept.resize(keep);
+        const std::optional<PlaneFit> next = fit_plane(kept, facing);
         if (!next) return std::nullopt;
         fit = *next;
-        if (fit.rms_distance <= exact) return fit;
     }
-    return std::nullopt;
+    if (on_two_lines(kept, fit, 10.0 * exact)) return std::nullopt;
+    return fit;
 }
 
 std::optional<HeightFit> fit_height_quadric(std::span<const Vec3> points, const Plane& plane,
