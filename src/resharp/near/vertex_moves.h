@@ -85,12 +85,17 @@ struct MoveRule {
 /// Takes the mesh as it stands (`current`: positions, adjacency, normals), the input positions
 /// it came from (#V: what each vertex may move away from, by the rule), the feature patch of
 /// every vertex (#V, kNoIndex for none; Patches only) and the bands found (Patches only).
-/// Near: band vertices move by the shortest way onto the side of their own patch, where it
-/// bounds the solid next to the other sides and within their input cell (the others lie on
+/// Near: a plane is fitted to a patch's vertices off the bands around the vertex; on a flat
+/// face (most of the patch's vertices off the bands on one plane) it is the face's plane
+/// wherever the fit scatters and half its points lie on that plane (the rest the mesher put off
+/// the face beside an edge), and an exact fit to points that barely spread across it (a row and
+/// a vertex) is none. Band vertices move by the shortest way onto the side of their own patch,
+/// where it bounds the solid next to the other sides and within their input cell (the others lie on
 /// their surface already, up to its curvature); a vertex of no patch whose ring meets two or
 /// three patches (those of its ring's vertices, or where they have fewer than two, of the
 /// vertices within the fit rings: the two whose planes lie nearest it) moves onto where their
-/// planes meet (the sharp edge or corner): the point of it nearest the vertex within its input
+/// planes meet (the sharp edge or corner; not where its normal runs along an edge's line, on a
+/// third face): the point of it nearest the vertex within its input
 /// cell, or, where it misses that cell, the cell's point nearest it; where no plane crosses the
 /// input cell (the mesher put the vertex where the surface is not, as OpenVDB does across a
 /// concave corner, near/concave_bevels.h), within the cells around it too. A band vertex of a patch
