@@ -507,8 +507,6 @@ private:
         Fits fits;
         const std::size_t fitted = fit_sides(v, around, fits, scratch);
         const bool near_band = in_band_[v] && rule_.placement == VertexPlacement::Near;
-        if (near_band && fits[0] && !is_flat_fit(*fits[0]))
-            refit_own_farther(v, around[0], fits[0], scratch);
         own_fitted_farther = near_band && !fits[0];
         if (!fits[0] && !near_band) return 0;
         if (near_band && (fitted < 2 || !fits[0])) {
@@ -542,23 +540,6 @@ private:
             fitted += fits[i].has_value();
         }
         return fitted;
-    }
-
-    /// Whether a fit is a flat face's plane (kFlatFaceScatter).
-    bool is_flat_fit(const PlaneFit& fit) const {
-        return fit.rms_distance <= kFlatFaceScatter * rule_.grid.pitch;
-    }
-
-    /// Near, a band vertex's own plane that is not a flat face's within the fit rings: fitted
-    /// again within the other side fit rings, and taken where that is a flat face's. Beside a
-    /// concave edge OpenVDB's error reaches two or three cells, and within the fit rings its
-    /// face's vertices off the band may be mostly those it put off the face (chamfered_block
-    /// turned at 100 cells, a pocket's wall: 4 of 17 on the face, 31 of 46 within five rings).
-    void refit_own_farther(Index v, Index own, std::optional<PlaneFit>& fit,
-                           Scratch& scratch) const {
-        gather_rings(neighbours_, v, options_.other_side_fit_rings, kMaxOtherSideGathered, scratch);
-        const std::optional<PlaneFit> wide = fit_side(own, scratch);
-        if (wide && is_flat_fit(*wide)) fit = wide;
     }
 
     /// Fits again, within the other side fit rings around v, the planes of `patches` that have
