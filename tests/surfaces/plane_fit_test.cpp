@@ -92,6 +92,39 @@ TEST(PlaneOfMost, NeedsHalfThePointsOnThePlane) {
     EXPECT_FALSE(fit_plane_of_most(points, Vec3::UnitZ(), *first, 1e-6, 6, scratch));
 }
 
+// Two parallel lines of points lie on a plane, however they were meant: no plane of most
+// (three columns down a cylinder, two of them off the plane of the third and its neighbour).
+TEST(PlaneOfMost, TwoLinesOfPointsAreNoFace) {
+    std::vector<Vec3> points;
+    for (int k = 0; k < 8; ++k) {
+        points.emplace_back(0.0, 0.0, 0.5 * k);
+        points.emplace_back(0.5, 0.1, 0.5 * k);
+    }
+    for (int k = 0; k < 4; ++k) points.emplace_back(1.0, 0.4, 0.5 * k);  // a third, shorter
+    const std::optional<PlaneFit> first = fit_plane(points, Vec3(-0.2, 1, 0));
+    ASSERT_TRUE(first);
+    EXPECT_GT(first->rms_distance, 0.01);
+    std::vector<Vec3> scratch;
+    EXPECT_FALSE(fit_plane_of_most(points, Vec3(-0.2, 1, 0), *first, 1e-6, 6, scratch));
+}
+
+// A line of points and one beside it spread across their plane by almost nothing; a lattice
+// by as much one way as the other.
+TEST(InPlaneSpread, TellsALineAndAPointFromALattice) {
+    std::vector<Vec3> line{{0, 0, 0},   {0.5, 0, 0}, {1, 0, 0},
+                           {1.5, 0, 0}, {2, 0, 0},   {0.5, 0.4, 0}};
+    const std::optional<PlaneFit> thin = fit_plane(line, Vec3::UnitZ());
+    ASSERT_TRUE(thin);
+    EXPECT_LT(in_plane_spread(line, *thin), 0.05);
+    std::vector<Vec3> lattice;
+    for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < 4; ++j) lattice.emplace_back(0.5 * i, 0.5 * j, 0.0);
+    }
+    const std::optional<PlaneFit> wide = fit_plane(lattice, Vec3::UnitZ());
+    ASSERT_TRUE(wide);
+    EXPECT_NEAR(in_plane_spread(lattice, *wide), 1.0, 1e-9);
+}
+
 // On a cylinder of radius 10 sampled 3 units either way, a plane leaves the surface by its sag
 // (0.45 at the rim); the second-order height fit finds the surface over any point to the
 // cylinder's fourth-order terms.

@@ -4,6 +4,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "resharp/surfaces/local_quadric.h"
@@ -48,19 +49,37 @@ Eigen::Matrix2d covariance_in_plane(std::span<const Vec3> points, const PlaneFit
     return covariance;
 }
 
-/// Whether the points lie on at most two lines across the smaller of their principal
-/// directions in the plane: two values of that coordinate or fewer, `gap` apart. Any two
-/// parallel lines of points lie in one plane, which then says nothing of a face.
+/// Whether the points lie on at most two parallel lines of the plane of `fit`, `gap` (mm) apart
+/// or less: any two such lines lie in one plane, which then says nothing of a face. The line
+/// through the first point and the most others (their directions from it, as angles in the
+/// plane, equal to a millionth of a radian) gives the direction; across it the points take two
+/// values or fewer. Bound: a sort of the points.
 bool on_two_lines(std::span<const Vec3> points, const PlaneFit& fit, double gap) {
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver(covariance_in_plane(points, fit));
+    if (points.size() < 3) return true;
     const Eigen::Matrix3d frame = tangent_frame(fit.plane.normal);
-    const Eigen::Vector2d smaller = solver.eigenvectors().col(0);
-    const Vec3 across = smaller.x() * frame.col(0) + smaller.y() * frame.col(1);
+    std::vector<double> angles;
+    angles.reserve(points.size() - 1);
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        const Vec3 d = points[i] - points[0];
+        double angle = std::atan2(frame.col(1).dot(d), frame.col(0).dot(d));
+        if (angle < 0.0) angle += std::numbers::pi;  // a line's direction, either way along it
+        if (angle >= std::numbers::pi) angle -= std::numbers::pi;
+        angles.push_back(angle);
+    }
+    std::sort(angles.begin(), angles.end());
+    constexpr double kSameAngle = 1e-6;
+    std::size_t best = 0, run = 0;
+    double along = angles[0];
+    for (std::size_t i = 0; i < angles.size(); ++i) {
+        run = i > 0 && angles[i] - angles[i - 1] <= kSameAngle ? run + 1 : 1;
+        if (run > best) best = run, along = angles[i];
+    }
+    const Vec3 across = -std::sin(along) * frame.col(0) + std::cos(along) * frame.col(1);
     std::vector<double> values;
     values.reserve(points.size());
-    for (const Vec3& p : points) values.push_back(across.dot(p - fit.centroid));
+    for (const Vec3& p : points) values.push_back(across.dot(p - points[0]));
     std::sort(values.begin(), values.end());
-    std::size_t distinct = values.empty() ? 0 : 1;
+    std::size_t distinct = 1;
     for (std::size_t i = 1; i < values.size(); ++i) distinct += values[i] - values[i - 1] > gap;
     return distinct <= 2;
 }

@@ -42,11 +42,11 @@ std::optional<PlaneFit> fit_plane(std::span<const Vec3> points, const Vec3& faci
 /// would leave fewer than half the points, or fewer than `min_points`: points on a curved face
 /// lie on no plane, and a narrow strip of them near one does not hold half; nor where the
 /// points kept lie on two lines (two values, 10 exact apart or fewer, across the smaller of their
-/// principal directions in the plane): any two parallel lines of points lie in a plane, as the
-/// columns of vertices surface nets leave down a hole along a grid axis do (the pocketed block
-/// of the tests: without this, 142 of its 165 vertices between patches reached their edge, against
-/// 157 or more). `kept` is scratch,
-/// reused from call to call.
+/// principal directions in the plane): any two parallel lines of points lie in a plane, as two
+/// columns of the vertices surface nets leave down a hole along a grid axis do (without this
+/// test 142 of the 165 vertices between patches of the pocketed block of the tests reached their
+/// edge, against 157 or more with it; which patch it refused there was not traced). `kept` is
+/// scratch, reused from call to call.
 std::optional<PlaneFit> fit_plane_of_most(std::span<const Vec3> points, const Vec3& facing,
                                           const PlaneFit& first, double exact,
                                           std::size_t min_points, std::vector<Vec3>& kept);
