@@ -41,8 +41,8 @@ std::optional<PlaneFit> fit_plane(std::span<const Vec3> points, const Vec3& faci
 /// at most `exact` (root mean square): that fit, of the points kept, is given. None where that
 /// would leave fewer than half the points, or fewer than `min_points`: points on a curved face
 /// lie on no plane, and a narrow strip of them near one does not hold half; nor where the
-/// points kept lie on two lines (two values, 10 exact apart or fewer, across the smaller of their
-/// principal directions in the plane): any two parallel lines of points lie in a plane, as two
+/// points kept lie on two parallel lines (two values or fewer, 10 exact apart, across the line
+/// through the first point and the most others): any two such lines lie in a plane, as two
 /// columns of the vertices surface nets leave down a hole along a grid axis do (without this
 /// test 142 of the 165 vertices between patches of the pocketed block of the tests reached their
 /// edge, against 157 or more with it; which patch it refused there was not traced). `kept` is
