@@ -678,12 +678,7 @@ private:
         for_each_index(members.size(), 1, [&](std::size_t p) {
             if (members[p].size() < min_points) return;
             std::vector<Vec3> points;
-            points.reserve(members[p].size());
-            Vec3 facing = Vec3::Zero();
-            for (Index v : members[p]) {
-                points.push_back(current_.mesh.positions[v]);
-                facing += current_.normals.vertex[v];
-            }
+            const Vec3 facing = points_of(members[p], current_.mesh.positions, points);
             const std::optional<PlaneFit> fit = fit_plane(points, facing);
             if (!fit) return;
             std::vector<Vec3> kept;
@@ -692,6 +687,20 @@ private:
                           : fit_plane_of_most(points, facing, *fit, exact, min_points, kept);
         });
         return flat;
+    }
+
+    /// The places of `vertices` in `positions`, into `points`; gives the sum of their normals,
+    /// the side a plane fitted to them faces.
+    Vec3 points_of(const std::vector<Index>& vertices, const std::vector<Vec3>& positions,
+                   std::vector<Vec3>& points) const {
+        points.clear();
+        points.reserve(vertices.size());
+        Vec3 facing = Vec3::Zero();
+        for (Index v : vertices) {
+            points.push_back(positions[v]);
+            facing += current_.normals.vertex[v];
+        }
+        return facing;
     }
 
     /// Per patch id, its vertices off the bands, ascending. Bound: one pass over the vertices.
@@ -711,12 +720,7 @@ private:
     std::optional<PlaneFit> whole_patch_plane(const std::vector<Index>& vertices) const {
         if (vertices.size() < kMinWholePatchPoints) return std::nullopt;
         std::vector<Vec3> points;
-        points.reserve(vertices.size());
-        Vec3 facing = Vec3::Zero();
-        for (Index v : vertices) {
-            points.push_back(input_[v]);
-            facing += current_.normals.vertex[v];
-        }
+        const Vec3 facing = points_of(vertices, input_, points);
         const std::optional<PlaneFit> fit = fit_plane(points, facing);
         if (!fit) return std::nullopt;
         double expected = 0.0;   // the mean square of the midpoints' distances to the face
