@@ -122,13 +122,6 @@ SurfaceNormals surface_normals_after_moves(const Mesh& mesh, const Connectivity&
     return unmoved;
 }
 
-std::vector<Vec3> vertex_normals_after_moves(const Mesh& mesh, const Connectivity& connectivity,
-                                             std::vector<Vec3> unmoved,
-                                             std::span<const std::uint8_t> moved) {
-    return vertex_normals_of_changed_faces(mesh, connectivity, std::move(unmoved),
-                                           faces_with_moved_corner(mesh, connectivity, moved));
-}
-
 std::vector<Vec3> vertex_normals(const Mesh& mesh, const Connectivity& connectivity) {
     return surface_normals(mesh, connectivity).vertex;
 }

@@ -42,17 +42,11 @@ std::vector<Index> faces_with_moved_corner(const Mesh& mesh, const Connectivity&
 /// surface_normals() of `mesh` from `unmoved`, those of a mesh with the same faces whose
 /// vertices flagged in `moved` (#V) sat elsewhere: only the faces with a moved corner and the
 /// vertices of those faces are computed again, the same bits as surface_normals() gives. A near
-/// mesh's vertex moves touch a few percent of its faces.
+/// mesh's vertex moves touch a few percent of its faces. Either way: it gives a moved mesh's
+/// normals back to the mesh they were moved from, the same bits.
 SurfaceNormals surface_normals_after_moves(const Mesh& mesh, const Connectivity& connectivity,
                                            SurfaceNormals unmoved,
                                            std::span<const std::uint8_t> moved);
-
-/// The vertex half of surface_normals_after_moves(): the vertex normals of `mesh` from
-/// `unmoved`, those of a mesh with the same faces whose flagged vertices sat elsewhere. Either
-/// way: it gives a moved mesh's normals back to the mesh they were moved from, the same bits.
-std::vector<Vec3> vertex_normals_after_moves(const Mesh& mesh, const Connectivity& connectivity,
-                                             std::vector<Vec3> unmoved,
-                                             std::span<const std::uint8_t> moved);
 
 /// Per vertex (#V): area-weighted mean of the incident face normals, normalised; zero where
 /// every incident face is degenerate. Area weights need no trigonometry, which matters at a

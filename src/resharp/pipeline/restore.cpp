@@ -666,15 +666,14 @@ private:
             ++report_.move_rounds;
             // The moved mesh takes the planned places for the round, which reads only the
             // flags, and gives them back after it: one copy of them alive, not two (peak memory).
-            // The input's vertex normals likewise: nothing in the round reads them (the harm
-            // check reads the input's face normals), and they come back unless the round ends
-            // the restoration.
+            // The input's normals likewise: nothing in the round reads them (the harm check
+            // takes the input's face normals from the moved mesh's, check_harm()), and they
+            // come back unless the round ends the restoration.
             Mesh moved;
             moved.positions = std::move(moves.position);
             moved.triangles = mesh.triangles;
             Detection detection = detect_bands_after_moves(
-                moved, segmented, {input.normals.face, std::move(input.normals.vertex)},
-                moves.moved, options_);
+                moved, segmented, std::move(input.normals), moves.moved, options_);
             add_times(detection.stage_time);
             const HarmReference reference{surface, moves.moved};
             BandRestoration restored = restore_detected(moved, detection, duplicates, &reference);
@@ -686,8 +685,8 @@ private:
                 report_.largest_move = moves.largest_move;
                 return;
             }
-            input.normals.vertex = vertex_normals_after_moves(
-                mesh, *input.connectivity, std::move(detection.normals.vertex), moves.moved);
+            input.normals = surface_normals_after_moves(mesh, *input.connectivity,
+                                                        std::move(detection.normals), moves.moved);
             if (restored.rounds_exhausted) break;  // its unchanged moved mesh was not checked
             VertexMoves fewer = without_moves_of(mesh, moves, restored.unexplained_harm);
             if (fewer.moved_count == moves.moved_count) break;  // harm no move explains

@@ -231,6 +231,7 @@ public:
           piece_normal_(split_.piece_count()),
           split_box_(split_.size()),
           harmful_(split_.size(), 0) {
+        if (!moved_.empty()) make_unmoved_normals();
         choose_judged(changed);
         describe_pieces();
         if (check_crossings_) find_simple_fans();
@@ -269,6 +270,24 @@ public:
 private:
     void mark_harmful(Index i) const {
         std::atomic_ref<std::uint8_t>(harmful_[i]).store(1, std::memory_order_relaxed);
+    }
+
+    /// Input face g's unit normal: the input's own, or with moves (see check_harm()) that of
+    /// a split face made again from its input corners and the moved mesh's elsewhere.
+    const Vec3& input_normal(Index g) const {
+        if (moved_.empty()) return input_.normals.face[g];
+        const Index j = split_.number(g);
+        return j == kNoIndex ? moved_normals_[g] : unmoved_normal_[j];
+    }
+
+    /// Per split face, the unit normal of its input face, as surface_normals() makes it.
+    void make_unmoved_normals() {
+        unmoved_normal_.resize(split_.size());
+        const auto& x = input_.mesh.positions;
+        tbb::parallel_for(Index{0}, static_cast<Index>(split_.size()), [&](Index i) {
+            const Triangle& t = input_.mesh.triangles[split_.face(i)];
+            unmoved_normal_[i] = triangle_normal(x[t[0]], x[t[1]], x[t[2]]);
+        });
     }
 
     const Triangle& piece_triangle(Index i, Index k) const {
@@ -374,7 +393,7 @@ private:
         for (Index g : input_.connectivity.faces_around(v)) {
             const Index j = split_.number(g);
             if (j == kNoIndex) {
-                fan.add(input_.mesh.triangles[g], v, input_.normals.face[g]);
+                fan.add(input_.mesh.triangles[g], v, input_normal(g));
                 continue;
             }
             for (Index k = 0; k < split_.piece_count(j); ++k) {
@@ -500,7 +519,7 @@ private:
             some[k] = m[k].isZero(0.0);
         }
         for (std::size_t j = 0; j < scratch.faces.size(); ++j) {  // Bound: the two-ring's faces
-            const Vec3& g = input_.normals.face[scratch.faces[j]];
+            const Vec3& g = input_normal(scratch.faces[j]);
             for (Index k = 0; k < count; ++k) {
                 const bool against =
                     (g.x() * m[k].x() + g.y() * m[k].y()) + g.z() * m[k].z() < -kRightAngleMargin;
@@ -532,7 +551,7 @@ private:
     /// far below any real turn, keeps rounding from counting a piece that lies in one plane of
     /// a right-angled edge as turned against the other plane's faces.
     bool turns_against(const Vec3& n, Index g) const {
-        return input_.normals.face[g].dot(n) < -kRightAngleMargin;
+        return input_normal(g).dot(n) < -kRightAngleMargin;
     }
 
     /// At an input vertex the nearest input faces are the faces around it.
@@ -593,11 +612,11 @@ private:
     /// angle (the triangle inequality on the sphere); the slack covers rounding.
     bool may_fold_anywhere(Index i) const {
         const Index f = split_.face(i);
-        const Vec3& n = input_.normals.face[f];
+        const Vec3& n = input_normal(f);
         auto within = [&](const Vec3& m) { return n.dot(m) > half_fold_cosine_ + 1e-12; };
         auto all_within = [&](Index g) {
             const Index j = split_.number(g);
-            if (j == kNoIndex) return within(input_.normals.face[g]);
+            if (j == kNoIndex) return within(input_normal(g));
             for (Index k = 0; k < split_.piece_count(j); ++k) {
                 if (!within(piece_normal(j, k))) return false;
             }
@@ -622,7 +641,7 @@ private:
             if (!across || piece_normal(i, k).dot(*across->normal) >= min_fold_cosine_) continue;
             const Index g = across->source;
             const bool input_folded =
-                g != f && input_.normals.face[f].dot(input_.normals.face[g]) < min_fold_cosine_;
+                g != f && input_normal(f).dot(input_normal(g)) < min_fold_cosine_;
             if (!input_folded) return true;
         }
         return false;
@@ -644,7 +663,7 @@ private:
         auto search = [&](Index g) -> std::optional<Across> {
             const Index j = split_.number(g);
             if (j == kNoIndex) {
-                if (holds(input_.mesh.triangles[g])) return Across{g, &input_.normals.face[g]};
+                if (holds(input_.mesh.triangles[g])) return Across{g, &input_normal(g)};
                 return std::nullopt;
             }
             for (Index m = 0; m < split_.piece_count(j); ++m) {
@@ -697,7 +716,7 @@ private:
             if (g == f) continue;
             const Index j = split_.number(g);
             if (j == kNoIndex) {
-                const Shape whole(input_.mesh.triangles[g], x, input_.normals.face[g]);
+                const Shape whole(input_.mesh.triangles[g], x, input_normal(g));
                 if (whole.box.intersects(box) && !lies_beyond(cap, f, g)) test_against(whole);
                 continue;
             }
@@ -752,7 +771,7 @@ private:
     /// those vertices.
     Cap cap_of(Index i, const std::array<std::optional<Shape>, 6>& own, double tolerance) const {
         const Index f = split_.face(i);
-        const Vec3& n = input_.normals.face[f];
+        const Vec3& n = input_normal(f);
         const double offset = n.dot(input_.mesh.positions[input_.mesh.triangles[f][0]]);
         int above = 0, below = 0, added = 0;
         for (Index k = 0; k < split_.piece_count(i); ++k) {
@@ -788,6 +807,7 @@ private:
     double half_fold_cosine_;  ///< of half the fold angle
     bool check_crossings_;
     SplitFaces split_;
+    std::vector<Vec3> unmoved_normal_;     ///< per split face, with moves: its input normal
     std::vector<Vec3> piece_normal_;       ///< per numbered piece (SplitFaces): its unit normal
     std::vector<OuterBox> split_box_;      ///< per split face: around the box of its pieces
     std::vector<std::uint8_t> judged_;     ///< per split face: judged by this check

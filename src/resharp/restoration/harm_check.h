@@ -41,6 +41,8 @@ struct MovedVertices {
     /// Per input face (#F), given with `moved`: the unit normals of the moved mesh that was
     /// split, as surface_normals() gives them; a face the split left whole keeps its own. Not
     /// made again here: on a midpoint mesh, whose every vertex moves, they took 24 bytes a face.
+    /// They stand for the input's face normals too, which the input surface then need not hold
+    /// (see check_harm()).
     std::span<const Vec3> face_normals;
 };
 
@@ -49,7 +51,10 @@ struct MovedVertices {
 /// Near-surface restoration splits a copy of the input with vertices moved (near/vertex_moves.h)
 /// and passes `moves`: the input vertices whose place in the split is not their input place
 /// count as new vertices, and every face with one as a split face, judged against the input
-/// surface it replaces.
+/// surface it replaces. With `moves`, the input's face normals are not read from `input` (which
+/// may then hold none: a copy beside the moved mesh's was 24 bytes a face, most of them the same
+/// bits): a face with no moved corner has the moved mesh's normal, and the split faces' own are
+/// made again from their input corners, the same bits as surface_normals() gives.
 /// A fault between a piece and another split face's piece blames both faces.
 ///
 /// The crossing check (c) tests a piece against the output faces of the input faces within two
