@@ -7,12 +7,10 @@
 #include <cmath>
 #include <complex>
 #include <cstdint>
-#include <cstring>
 #include <numbers>
 #include <optional>
 #include <span>
 #include <sstream>
-#include <unordered_map>
 #include <vector>
 
 #include "resharp/core/errors.h"
@@ -159,28 +157,6 @@ std::vector<double> scan_pitches(double spacing) {
     return pitches;
 }
 
-/// The scan's pitches, and the approximate unit phasors (approximate_turn_phasor) at each of them
-/// of every value scanned so far. The two readings of a mesh (exact and rounded tolerance) share
-/// most of their windows' values, and a value's terms are the same bits in both: the second
-/// reading computes those of its new values only.
-struct PitchScan {
-    std::vector<double> pitches;
-    std::unordered_map<std::uint64_t, std::vector<std::complex<double>>> unit_phasors;  // by bits
-};
-
-const std::vector<std::complex<double>>& approximate_unit_phasors(double value, PitchScan& scan) {
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &value, sizeof bits);
-    auto [it, added] = scan.unit_phasors.try_emplace(bits);
-    if (added) {
-        it->second.reserve(scan.pitches.size());
-        for (double pitch : scan.pitches) {
-            it->second.push_back(approximate_turn_phasor(value / pitch));
-        }
-    }
-    return it->second;
-}
-
 /// How well one lattice per axis, all of the pitch, holds the values (0..1), as the scan
 /// compares it: the sums run as phasor()'s do (axis by axis, value by value), so that a peak
 /// found with approximate_strengths() is confirmed with the same bits wherever it is looked at.
@@ -201,8 +177,9 @@ struct ApproximateStrengths {
     double error = 0.0;
 };
 
-ApproximateStrengths approximate_strengths(const AxisValues& near, PitchScan& scan) {
-    const std::size_t count = scan.pitches.size();
+ApproximateStrengths approximate_strengths(const AxisValues& near,
+                                           const std::vector<double>& pitches) {
+    const std::size_t count = pitches.size();
     const double w = total_weight(near);
     ApproximateStrengths out{std::vector<double>(count, 0.0), 0.0};
     std::vector<std::complex<double>> sum(count);
@@ -211,16 +188,20 @@ ApproximateStrengths approximate_strengths(const AxisValues& near, PitchScan& sc
     for (const auto& axis : near) {
         std::fill(sum.begin(), sum.end(), 0.0);
         for (const SharedValue& s : axis) {
-            const std::vector<std::complex<double>>& terms =
-                approximate_unit_phasors(s.value, scan);
-            for (std::size_t i = 0; i < count; ++i) sum[i] += s.weight * terms[i];
+            // Each term made where it is added: kept per value for the rounded reading, which
+            // shares most values with the exact one, they took 16 kB a value of fresh memory,
+            // whose page faults cost more than the terms (mech by surface nets: 230 values,
+            // 3.7 MB, about 8 ms of a 20 ms estimate on one thread).
+            for (std::size_t i = 0; i < count; ++i) {
+                sum[i] += s.weight * approximate_turn_phasor(s.value / pitches[i]);
+            }
             largest = std::max(largest, std::abs(s.value));
         }
         for (std::size_t i = 0; i < count; ++i) out.strength[i] += std::abs(sum[i]);
         most = std::max(most, axis.size());
     }
     for (double& x : out.strength) x /= w;
-    const double term = turn_phasor_error(largest / scan.pitches.front());
+    const double term = turn_phasor_error(largest / pitches.front());
     out.error = 4.0 * (term + static_cast<double>(most + 8) * DBL_EPSILON);
     return out;
 }
@@ -228,11 +209,11 @@ ApproximateStrengths approximate_strengths(const AxisValues& near, PitchScan& sc
 /// The pitches at which exact_strength() has a local peak of at least kMinStrength, with that
 /// strength: (strength, pitch). exact_strength() is taken only where the approximate strengths,
 /// within their error, could make a peak; elsewhere none can be.
-std::vector<std::pair<double, double>> strength_peaks(const AxisValues& near, PitchScan& scan) {
-    const std::vector<double>& pitches = scan.pitches;
+std::vector<std::pair<double, double>> strength_peaks(const AxisValues& near,
+                                                      const std::vector<double>& pitches) {
     std::vector<std::pair<double, double>> peaks;
     if (total_weight(near) <= 0.0) return peaks;
-    const ApproximateStrengths approximate = approximate_strengths(near, scan);
+    const ApproximateStrengths approximate = approximate_strengths(near, pitches);
     const std::vector<double>& s = approximate.strength;
     const double e = approximate.error;
     std::vector<std::optional<double>> exact(pitches.size());
@@ -292,8 +273,9 @@ Lattice phased_lattice(const AxisValues& near, double pitch) {
 /// (a window, so that the search steps can be coarse) peak, at most kCandidates of them. A
 /// lattice of pitch h also holds at h/2, h/3, ..., as strongly: the peaks nearly as strong as
 /// the strongest come first, coarsest first, then the others by strength.
-std::vector<Lattice> coarse_lattices(const AxisValues& near, PitchScan& scan) {
-    std::vector<std::pair<double, double>> peaks = strength_peaks(near, scan);  // (strength, pitch)
+std::vector<Lattice> coarse_lattices(const AxisValues& near, const std::vector<double>& pitches) {
+    std::vector<std::pair<double, double>> peaks =
+        strength_peaks(near, pitches);  // (strength, pitch)
     std::sort(peaks.rbegin(), peaks.rend());
     if (peaks.size() > kCandidates) peaks.resize(kCandidates);
     const double strongest = peaks.empty() ? 0.0 : peaks.front().first;
@@ -429,16 +411,16 @@ struct LatticeSeeds {
 
 /// What the two readings of one mesh (at the exact and at the rounded tolerance) share: its
 /// coordinates sorted per axis, its median edge length (the spacing the pitch search scales
-/// with) and the unit phasors of the pitch scan.
+/// with) and the pitches the scan tries.
 struct SharedWork {
     SortedCoordinates sorted;
     double spacing = 0.0;
-    PitchScan scan;
+    std::vector<double> pitches;
 };
 
 SharedWork shared_work(const Mesh& mesh) {
     SharedWork work{sorted_coordinates(mesh), median_edge_length(mesh), {}};
-    work.scan.pitches = scan_pitches(work.spacing);
+    work.pitches = scan_pitches(work.spacing);
     return work;
 }
 
@@ -474,9 +456,9 @@ Reading read_at(double tol, const SharedWork& work) {
     return r;
 }
 
-LatticeSeeds lattice_seeds(const std::optional<FirstWindow>& w, SharedWork& work) {
+LatticeSeeds lattice_seeds(const std::optional<FirstWindow>& w, const SharedWork& work) {
     if (!w) return {};
-    return {w->centre, w->reach, coarse_lattices(w->values, work.scan)};
+    return {w->centre, w->reach, coarse_lattices(w->values, work.pitches)};
 }
 
 /// Whether a refinement stayed a lattice within 5 % of the pitch it started from.
@@ -903,7 +885,7 @@ enum class Search { EdgeGridOnly, Any };
 /// Search::EdgeGridOnly, where no grid's edges hold the vertices it says so and stops there
 /// (an on-edge share of 0).
 PlacementEstimate estimate_within(const Mesh& mesh, const Reading& reading, Search search,
-                                  SharedWork& work) {
+                                  const SharedWork& work) {
     PlacementEstimate e;
     const double tol = reading.tol;
     const AxisValues& values = reading.values;
