@@ -167,8 +167,7 @@ Index most_faces_around(const Connectivity& connectivity, const std::vector<Inde
 
 }  // namespace
 
-BevelDissolution without_concave_bevels(const InputSurface& current,
-                                        const FeatureSegmentation& features,
+BevelDissolution without_concave_bevels(const InputSurface& current, FeatureSegmentation features,
                                         const BandClassification& bands, const Grid& grid,
                                         const VertexMoveOptions& options) {
     const double h = grid.pitch;
@@ -177,7 +176,7 @@ BevelDissolution without_concave_bevels(const InputSurface& current,
     const double min_angle_cosine = std::cos(options.junction_angle_deg * std::numbers::pi / 180.0);
     const std::size_t patches = features.patch_count;
     const std::vector<std::uint8_t> strip = strips(current, features, h, min_points);
-    if (std::find(strip.begin(), strip.end(), 1) == strip.end()) return {features, 0};
+    if (std::find(strip.begin(), strip.end(), 1) == strip.end()) return {std::move(features), 0};
     // A strip's plane as a bevel: all its vertices (those off the bands run along its middle,
     // on one line, and a bevel's ends, where it meets the next one's at a corner, part from its
     // plane by a few hundredths of a pitch).
@@ -215,18 +214,20 @@ BevelDissolution without_concave_bevels(const InputSurface& current,
             }
         }
     });
-    BevelDissolution r{features, 0};
+    BevelDissolution r{std::move(features), 0};
     r.bevels = static_cast<std::size_t>(std::count(dissolved.begin(), dissolved.end(), 1));
     if (r.bevels == 0) return r;
-    for (Index& p : r.features.face_patch) {
+    // In place: every patch is judged above, and a vertex's new patch reads the faces' alone.
+    FeatureSegmentation& out = r.features;
+    for (Index& p : out.face_patch) {
         if (p != kNoIndex && p < patches && dissolved[p]) p = kNoIndex;
     }
     std::vector<std::pair<Index, int>> counts;
     for (Index v = 0; v < current.mesh.vertex_count(); ++v) {
-        const Index p = features.vertex_patch[v];
+        const Index p = out.vertex_patch[v];
         if (p != kNoIndex && p < patches && dissolved[p])
-            r.features.vertex_patch[v] =
-                most_faces_around(current.connectivity, r.features.face_patch, v, counts);
+            out.vertex_patch[v] =
+                most_faces_around(current.connectivity, out.face_patch, v, counts);
     }
     return r;
 }

@@ -27,8 +27,9 @@ struct BevelDissolution {
     std::size_t bevels = 0;        ///< patches dissolved
 };
 
-/// Takes the mesh as it stands, its feature segmentation and bands, and the grid its vertices
-/// were placed on; gives the segmentation with every concave bevel's patch dissolved (its faces
+/// Takes the mesh as it stands, its feature segmentation (taken over: most meshes have no bevel,
+/// and a copy was 6 bytes a face of fresh memory) and bands, and the grid its vertices were
+/// placed on; gives the segmentation with every concave bevel's patch dissolved (its faces
 /// in no patch, its vertices in the patch with the most faces around them, none if no other):
 /// a patch whose vertices lie about one plane (within options.max_scatter_near pitches, rms)
 /// between the planes of two patches next to it or next to those (each fitted to its vertices
@@ -38,8 +39,7 @@ struct BevelDissolution {
 /// so the result does not depend on the order they are judged in. Bound: a pass over the
 /// vertices and faces, a plane fit per patch, and per patch a test per pair of the patches
 /// within two steps of it.
-BevelDissolution without_concave_bevels(const InputSurface& current,
-                                        const FeatureSegmentation& features,
+BevelDissolution without_concave_bevels(const InputSurface& current, FeatureSegmentation features,
                                         const BandClassification& bands, const Grid& grid,
                                         const VertexMoveOptions& options = {});
 

@@ -592,7 +592,7 @@ private:
         if (choice.placement == VertexPlacement::Near) {
             clock.run(Stage::VertexMoves, [&] {
                 // The moved mesh is segmented as the input is, so its bevels go too.
-                BevelDissolution bevels = without_concave_bevels(surface, input.features,
+                BevelDissolution bevels = without_concave_bevels(surface, std::move(input.features),
                                                                  input.bands, choice.grid, options);
                 report_.bevels_dissolved = bevels.bevels;
                 input.features = std::move(bevels.features);
