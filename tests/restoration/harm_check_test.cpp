@@ -49,33 +49,37 @@ TEST(HarmCheck, PiecesFoldedOntoEachOtherAreHarm) {
 
 TEST(HarmCheck, AFaceTurnedByAMovedVertexIsJudgedWhereTheMoveIsGiven) {
     // The strip as its own split, b0 moved where a piece turned over in the test above: its two
-    // faces are judged only through the flag, their ids unchanged.
+    // faces are judged only through the flag, their ids unchanged, against the strip at the
+    // input places.
     const test::Strip s = test::make_strip();
     SplitMesh moved;
     moved.mesh = s.mesh;
     moved.mesh.positions[2] = Vec3(-2.0, 3.0, 0.5);
     moved.source_face = {0, 1};
-    const std::vector<Vec3> normals = face_normals(moved.mesh);
+    const Connectivity c = build_connectivity(moved.mesh);
+    const SurfaceNormals normals = surface_normals(moved.mesh, c);
+    const InputSurface surface{moved.mesh, c, normals};
+    const std::vector<Vec3>& input_places = s.mesh.positions;
     const std::vector<std::uint8_t> b0_moved{0, 0, 1, 0};
-    const HarmReport r = check_harm(s.surface(), moved, {}, {}, {b0_moved, normals});
+    const HarmReport r = check_harm(surface, moved, {}, {}, {b0_moved, input_places});
     EXPECT_GE(r.turned, 1u);
     EXPECT_EQ(r.harmful_faces, (std::vector<Index>{0, 1}));
     EXPECT_TRUE(check_harm(s.surface(), moved).is_harmless());  // no face altered, none judged
     const std::vector<std::uint8_t> a0_moved{1, 0, 0, 0};       // a0's faces: face 0 alone
-    EXPECT_EQ(check_harm(s.surface(), moved, {}, {}, {a0_moved, normals}).harmful_faces,
+    EXPECT_EQ(check_harm(surface, moved, {}, {}, {a0_moved, input_places}).harmful_faces,
               (std::vector<Index>{0}));
-    // The whole faces are judged by the normals given: the input's own say nothing turned.
-    EXPECT_TRUE(check_harm(s.surface(), moved, {}, {}, {b0_moved, s.normals.face}).is_harmless());
+    // The whole faces are judged by the surface given: the input's own say nothing turned.
+    EXPECT_TRUE(check_harm(s.surface(), moved, {}, {}, {b0_moved, input_places}).is_harmless());
     const std::vector<std::uint8_t> one_flag{1};
-    EXPECT_THROW(check_harm(s.surface(), moved, {}, {}, {one_flag, normals}), InvalidInput);
-    EXPECT_THROW(check_harm(s.surface(), moved, {}, {}, {b0_moved, {}}), InvalidInput);
+    EXPECT_THROW(check_harm(surface, moved, {}, {}, {one_flag, input_places}), InvalidInput);
+    EXPECT_THROW(check_harm(surface, moved, {}, {}, {b0_moved, {}}), InvalidInput);
 }
 
 TEST(HarmCheck, AFaceWithAPointLeftOnePieceIsJudgedByItsPieceNotTheMovedFace) {
     // Face 0 (a0, a1, b0) as one piece (b0, a0, c), as two edges snapped onto its corner point
     // leave it, c across the edge a0-b0 from a1: the piece is face 0 turned over. b1 is
-    // flagged moved, so face 1 is judged whole, by the normal given for it; face 0's piece must
-    // be judged by its own normal, not the one given for face 0.
+    // flagged moved (to where it was), so face 1 is judged whole, by the surface's normal for
+    // it; face 0's piece must be judged by its own normal, not the surface's for face 0.
     const test::Strip s = test::make_strip();
     const auto& x = s.mesh.positions;
     SplitMesh split;
@@ -87,7 +91,7 @@ TEST(HarmCheck, AFaceWithAPointLeftOnePieceIsJudgedByItsPieceNotTheMovedFace) {
     split.split_faces = 1;
     split.altered_faces = {0};
     const std::vector<std::uint8_t> b1_moved{0, 0, 0, 1};
-    const HarmReport r = check_harm(s.surface(), split, {}, {}, {b1_moved, s.normals.face});
+    const HarmReport r = check_harm(s.surface(), split, {}, {}, {b1_moved, s.mesh.positions});
     EXPECT_GE(r.turned, 1u);
     EXPECT_EQ(r.harmful_faces, (std::vector<Index>{0}));
     EXPECT_EQ(check_harm(s.surface(), split).harmful_faces, (std::vector<Index>{0}));

@@ -261,8 +261,8 @@ Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const Restor
 
 namespace {
 
-/// check_harm() of `split` (of `input`) against `input`, or against the reference input, of
-/// which `input` is a copy with vertices moved.
+/// check_harm() of `split` (of `input`) against `input`, or, given a reference, against the
+/// input `input` was moved from.
 HarmReport held_against(const InputSurface& input, const HarmReference* reference,
                         const SplitMesh& split, const RestoreOptions& options,
                         std::span<const std::uint8_t> changed) {
@@ -273,8 +273,8 @@ HarmReport held_against(const InputSurface& input, const HarmReference* referenc
                                      check_harm(input, split, options.harm).harmful_faces);
         return harm;
     }
-    return check_harm(reference->input, split, options.harm, changed,
-                      {reference->moved, input.normals.face});
+    return check_harm(input, split, options.harm, changed,
+                      {reference->moved, reference->input_positions});
 }
 
 }  // namespace
@@ -675,7 +675,7 @@ private:
             Detection detection = detect_bands_after_moves(
                 moved, segmented, std::move(input.normals), moves.moved, options_);
             add_times(detection.stage_time);
-            const HarmReference reference{surface, moves.moved};
+            const HarmReference reference{mesh.positions, moves.moved};
             BandRestoration restored = restore_detected(moved, detection, duplicates, &reference);
             moves.position = std::move(moved.positions);
             if (!restored.rounds_exhausted && restored.unexplained_harm.empty()) {

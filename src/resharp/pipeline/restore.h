@@ -142,11 +142,11 @@ struct BandRestoration {
 };
 
 /// What restore_bands() holds its split against when that is not the surface it splits: the
-/// input whose vertices were moved to make that surface, and the flags of the vertices moved
-/// (#V; near-surface restoration). The split is checked against the input, the moved vertices
-/// as new ones (check_harm()'s `moved`).
+/// input places of that surface's vertices, and the flags of the vertices moved from them
+/// (#V each; near-surface restoration). The split is checked against the surface's faces at
+/// the input places, the moved vertices as new ones (check_harm()'s `moves`).
 struct HarmReference {
-    const InputSurface& input;
+    std::span<const Vec3> input_positions;
     std::span<const std::uint8_t> moved;
 };
 

@@ -65,7 +65,7 @@ struct Shape {
     const Vec3* n;
     Box3 box;
 
-    Shape(const Triangle& t, const std::vector<Vec3>& x, const Vec3& normal)
+    Shape(const Triangle& t, std::span<const Vec3> x, const Vec3& normal)
         : id(t), p{&x[t[0]], &x[t[1]], &x[t[2]]}, n(&normal), box(x[t[0]]) {
         box.extend(x[t[1]]).extend(x[t[2]]);
     }
@@ -221,7 +221,8 @@ public:
         : input_(input),
           output_(output),
           moved_(moves.moved),
-          moved_normals_(moves.face_normals),
+          input_positions_(moves.moved.empty() ? std::span<const Vec3>(input.mesh.positions)
+                                               : moves.input_positions),
           min_fold_cosine_(std::cos(options.fold_angle_deg * std::numbers::pi / 180.0)),
           half_fold_cosine_(std::cos(options.fold_angle_deg * std::numbers::pi / 360.0)),
           check_crossings_(options.check_crossings),
@@ -272,18 +273,18 @@ private:
         std::atomic_ref<std::uint8_t>(harmful_[i]).store(1, std::memory_order_relaxed);
     }
 
-    /// Input face g's unit normal: the input's own, or with moves (see check_harm()) that of
-    /// a split face made again from its input corners and the moved mesh's elsewhere.
+    /// Input face g's unit normal: the surface's own, or with moves (see check_harm()) that of a
+    /// split face made again from its input corners.
     const Vec3& input_normal(Index g) const {
         if (moved_.empty()) return input_.normals.face[g];
         const Index j = split_.number(g);
-        return j == kNoIndex ? moved_normals_[g] : unmoved_normal_[j];
+        return j == kNoIndex ? input_.normals.face[g] : unmoved_normal_[j];
     }
 
     /// Per split face, the unit normal of its input face, as surface_normals() makes it.
     void make_unmoved_normals() {
         unmoved_normal_.resize(split_.size());
-        const auto& x = input_.mesh.positions;
+        const auto& x = input_positions_;
         tbb::parallel_for(Index{0}, static_cast<Index>(split_.size()), [&](Index i) {
             const Triangle& t = input_.mesh.triangles[split_.face(i)];
             unmoved_normal_[i] = triangle_normal(x[t[0]], x[t[1]], x[t[2]]);
@@ -295,7 +296,7 @@ private:
     }
     /// The unit normal of piece k of split face i.
     const Vec3& piece_normal(Index i, Index k) const {
-        return split_.is_whole(i) ? moved_normals_[split_.face(i)]
+        return split_.is_whole(i) ? input_.normals.face[split_.face(i)]
                                   : piece_normal_[split_.first_piece(i) + k];
     }
     Shape piece_shape(Index i, Index k) const {
@@ -497,7 +498,7 @@ private:
     /// The boxes of scratch.faces, made the first time a piece of the face needs them.
     void ensure_boxes(Scratch& scratch) const {
         if (!scratch.boxes.empty()) return;
-        const auto& x = input_.mesh.positions;
+        const auto& x = input_positions_;
         for (Index g : scratch.faces) {
             const Triangle& t = input_.mesh.triangles[g];
             scratch.boxes.push_back(Box3(x[t[0]]).extend(x[t[1]]).extend(x[t[2]]));
@@ -580,7 +581,7 @@ private:
             against = std::min(against, distance_squared(q, candidates.faces[j]));
         }
         if (against == kInfinity) return false;  // no face turned against is near enough
-        const double tie = kTouchRatio * std::sqrt(longest_edge_squared(input_.mesh, f));
+        const double tie = kTouchRatio * std::sqrt(input_size_squared(f));
         const double reach = std::sqrt(against) + tie;  // as near as the faces turned against
         if (!(reach < std::sqrt(other))) return false;
         for (std::size_t j = 0; j < candidates.faces.size(); ++j) {
@@ -600,9 +601,18 @@ private:
         return box.squaredExteriorDistance(q) * (1.0 - 1e-12);
     }
 
+    /// Squared length of input face f's longest edge (longest_edge_squared() at its input
+    /// corners).
+    double input_size_squared(Index f) const {
+        const Triangle& t = input_.mesh.triangles[f];
+        const auto& x = input_positions_;
+        return std::max({(x[t[1]] - x[t[0]]).squaredNorm(), (x[t[2]] - x[t[1]]).squaredNorm(),
+                         (x[t[0]] - x[t[2]]).squaredNorm()});
+    }
+
     double distance_squared(const Vec3& q, Index g) const {
         const Triangle& t = input_.mesh.triangles[g];
-        const auto& x = input_.mesh.positions;
+        const auto& x = input_positions_;
         return squared_distance_to_triangle(q, x[t[0]], x[t[1]], x[t[2]]);
     }
 
@@ -711,7 +721,7 @@ private:
             return met;
         };
         const Cap cap = cap_of(i, own, tolerance);
-        const auto& x = input_.mesh.positions;
+        const auto& x = input_positions_;
         for (Index g : candidates) {
             if (g == f) continue;
             const Index j = split_.number(g);
@@ -772,7 +782,7 @@ private:
     Cap cap_of(Index i, const std::array<std::optional<Shape>, 6>& own, double tolerance) const {
         const Index f = split_.face(i);
         const Vec3& n = input_normal(f);
-        const double offset = n.dot(input_.mesh.positions[input_.mesh.triangles[f][0]]);
+        const double offset = n.dot(input_positions_[input_.mesh.triangles[f][0]]);
         int above = 0, below = 0, added = 0;
         for (Index k = 0; k < split_.piece_count(i); ++k) {
             for (int m = 0; m < 3; ++m) {
@@ -794,15 +804,15 @@ private:
         const Triangle& own = input_.mesh.triangles[f];
         for (Index v : input_.mesh.triangles[g]) {
             if (v == own[0] || v == own[1] || v == own[2]) continue;
-            if (cap.n.dot(input_.mesh.positions[v]) >= cap.offset - cap.tolerance) return false;
+            if (cap.n.dot(input_positions_[v]) >= cap.offset - cap.tolerance) return false;
         }
         return true;
     }
 
     const InputSurface& input_;
     const SplitMesh& output_;
-    std::span<const std::uint8_t> moved_;  ///< #V or empty: input vertices the output moved
-    std::span<const Vec3> moved_normals_;  ///< #F with `moved_`: the moved mesh's face normals
+    std::span<const std::uint8_t> moved_;    ///< #V or empty: input vertices the output moved
+    std::span<const Vec3> input_positions_;  ///< #V: the input's places of the vertices
     double min_fold_cosine_;
     double half_fold_cosine_;  ///< of half the fold angle
     bool check_crossings_;
@@ -838,10 +848,10 @@ HarmReport check_harm(const InputSurface& input, const SplitMesh& output,
                            " move flags for " + std::to_string(input.mesh.vertex_count()) +
                            " vertices");
     }
-    if (!moves.moved.empty() && moves.face_normals.size() != input.mesh.face_count()) {
-        throw InvalidInput("harm check: " + std::to_string(moves.face_normals.size()) +
-                           " moved face normals for " + std::to_string(input.mesh.face_count()) +
-                           " faces");
+    if (!moves.moved.empty() && moves.input_positions.size() != input.mesh.vertex_count()) {
+        throw InvalidInput("harm check: " + std::to_string(moves.input_positions.size()) +
+                           " input positions for " + std::to_string(input.mesh.vertex_count()) +
+                           " vertices");
     }
     RESHARP_EXPENSIVE_ASSERT(output.source_face.size() == output.mesh.face_count());
     RESHARP_EXPENSIVE_ASSERT(std::is_sorted(output.source_face.begin(), output.source_face.end()));

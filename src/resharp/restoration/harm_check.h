@@ -34,27 +34,25 @@ struct HarmReport {
     bool is_harmless() const { return harmful_faces.empty(); }
 };
 
-/// Near-surface restoration's moves (near/vertex_moves.h), as check_harm() reads them.
+/// Near-surface restoration's moves (near/vertex_moves.h), as check_harm() reads them: the
+/// surface it is given is the moved one, and these say where its vertices were in the input.
 struct MovedVertices {
     /// Per input vertex (#V): its place in the split is not its input place. Empty: none moved.
     std::span<const std::uint8_t> moved;
-    /// Per input face (#F), given with `moved`: the unit normals of the moved mesh that was
-    /// split, as surface_normals() gives them; a face the split left whole keeps its own. Not
-    /// made again here: on a midpoint mesh, whose every vertex moves, they took 24 bytes a face.
-    /// They stand for the input's face normals too, which the input surface then need not hold
-    /// (see check_harm()).
-    std::span<const Vec3> face_normals;
+    /// Per input vertex (#V), given with `moved`: its input place.
+    std::span<const Vec3> input_positions;
 };
 
 /// Takes the input surface and its split; checks the pieces of every split face, the faces
 /// the split lists as altered (faces left whole are the input's own and are not judged).
-/// Near-surface restoration splits a copy of the input with vertices moved (near/vertex_moves.h)
-/// and passes `moves`: the input vertices whose place in the split is not their input place
-/// count as new vertices, and every face with one as a split face, judged against the input
-/// surface it replaces. With `moves`, the input's face normals are not read from `input` (which
-/// may then hold none: a copy beside the moved mesh's was 24 bytes a face, most of them the same
-/// bits): a face with no moved corner has the moved mesh's normal, and the split faces' own are
-/// made again from their input corners, the same bits as surface_normals() gives.
+/// Near-surface restoration splits the input with vertices moved (near/vertex_moves.h): it
+/// passes the moved surface (its mesh, connectivity and normals) as `input`, and `moves`: the
+/// vertices whose place in the split is not their input place count as new vertices, and every
+/// face with one as a split face, judged against the input surface it replaces. That surface
+/// is the moved one's faces at the input places: a face with no moved corner has the moved
+/// surface's normal, the same bits, and the split faces' input normals are made again from
+/// their input corners (surface_normals()'s bits). No copy of the input mesh or its normals is
+/// needed beside the moved one's (4 and 8 MB on mech by surface nets).
 /// A fault between a piece and another split face's piece blames both faces.
 ///
 /// The crossing check (c) tests a piece against the output faces of the input faces within two
@@ -73,8 +71,8 @@ struct MovedVertices {
 /// its own pieces and those of the faces within two rings of it, so elsewhere it stands (no
 /// harm). The counts then cover the judged faces alone. Empty: every split face is judged.
 /// \throws InvalidInput if the fold angle is not in (90, 180], `changed` is neither empty nor
-///         one flag per input face, or `moves` neither empty nor one flag per input vertex and
-///         one normal per input face.
+///         one flag per input face, or `moves` neither empty nor one flag and one input place
+///         per input vertex.
 HarmReport check_harm(const InputSurface& input, const SplitMesh& output,
                       const HarmCheckOptions& options = {},
                       std::span<const std::uint8_t> changed = {}, const MovedVertices& moves = {});
