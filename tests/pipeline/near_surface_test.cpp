@@ -242,5 +242,35 @@ TEST(NearSurface, KeepsWhatBecameOfThePointsAndMoves) {
     EXPECT_EQ(r.report.edge_points_inserted + r.report.corner_points_inserted > 0, inserted > 0);
 }
 
+TEST(NearSurface, AMeshGivenUpLendsItsFacesToTheRoundsAndComesBackWholeWhenCancelled) {
+    // A near round borrows the triangles of a mesh its caller gave up: the result is a copy's,
+    // and cancelled at any question, inside a round too, the mesh comes back whole.
+    const Case c{SmallPart::PocketedBlock, sim::Mesher::SurfaceNets, VertexMode::Near};
+    const Mesh input = test::small_part(c.part, 0.5, c.mesher);
+    for (int threads : {1, 2}) {
+        RestoreOptions options = near_options(c);
+        options.threads = threads;
+        int asked = 0;
+        options.stop.cancelled = [&] { return ++asked < 0; };  // counts, never stops
+        const RestoreResult copied = restore(input, options);
+        ASSERT_GT(copied.report.moved_vertices, 0u);
+        const int whole = asked;
+        ASSERT_GT(whole, 2);
+        Mesh given = input;
+        const RestoreResult taken = restore(std::move(given), options);
+        EXPECT_EQ(taken.mesh.positions, copied.mesh.positions);
+        EXPECT_EQ(taken.mesh.triangles, copied.mesh.triangles);
+        for (int stop_at = 1; stop_at <= whole; ++stop_at) {
+            int count = 0;
+            options.stop.cancelled = [&] { return ++count >= stop_at; };
+            Mesh cancelled = input;
+            const RestoreResult back = restore(std::move(cancelled), options);
+            EXPECT_TRUE(back.report.output_unchanged) << stop_at;
+            EXPECT_EQ(back.mesh.triangles, input.triangles) << stop_at;
+            EXPECT_EQ(back.mesh.positions, input.positions) << stop_at;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace resharp

@@ -407,6 +407,33 @@ std::size_t face_points_inserted(const BandRestoration& r) {
                                                   [&](Index p) { return in_face[p] != 0; }));
 }
 
+/// A near round's moved mesh: the planned places, and the faces of the mesh they were planned
+/// on. A mesh its caller gave up (restore(Mesh&&)) lends its triangles for the round and has
+/// them back when the round ends, however it ends: nothing reads them meanwhile (the harm check
+/// reads the moved mesh's, HarmReference). Else they are copied: 12 bytes a face of fresh
+/// memory at the restoration's peak (mech by surface nets: 4 MB, about 1,000 page faults).
+class RoundMesh {
+public:
+    RoundMesh(const Mesh& mesh, Mesh* lender, std::vector<Vec3> places) : lender_(lender) {
+        RESHARP_ASSERT(!lender || lender == &mesh);
+        moved_.positions = std::move(places);
+        moved_.triangles = lender ? std::move(lender->triangles) : mesh.triangles;
+    }
+    ~RoundMesh() {
+        if (lender_) lender_->triangles = std::move(moved_.triangles);
+    }
+    RoundMesh(const RoundMesh&) = delete;
+    RoundMesh& operator=(const RoundMesh&) = delete;
+
+    const Mesh& mesh() const { return moved_; }
+    /// The places, given back for the next round (the mesh holds none after).
+    std::vector<Vec3> take_places() { return std::move(moved_.positions); }
+
+private:
+    Mesh* lender_;
+    Mesh moved_;
+};
+
 /// restore() on one mesh: the one place that sequences the stages and fills the report.
 class Pipeline {
 public:
@@ -466,7 +493,7 @@ public:
         if (placement.placement == VertexPlacement::Exact) {
             take(restore_detected(mesh, detection, duplicates));
         } else {
-            restore_near(mesh, detection, placement, duplicates);
+            restore_near(mesh, detection, placement, duplicates, beside);
         }
         const StageTimer waiting;
         beside.wait();
@@ -647,8 +674,9 @@ private:
     /// the input itself; moves whose faces do harm are given up and the rest tried again.
     /// Bound: options.max_harm_rounds rounds, each but the last giving up at least one move;
     /// past it, or where harm remains that no move explains, the exact path on the input.
+    /// `beside`: the work run beside the restoration, which reads the input mesh.
     void restore_near(const Mesh& mesh, Detection& input, const PlacementChoice& choice,
-                      const DuplicateFaces& duplicates) {
+                      const DuplicateFaces& duplicates, tbb::task_group& beside) {
         const InputSurface surface = input.surface(mesh);
         std::optional<Detection> smoothed;
         VertexMoves moves = plan_moves(surface, input, choice, smoothed);
@@ -662,6 +690,10 @@ private:
         }
         const Detection& segmented = smoothed ? *smoothed : input;
         if (options_.keep_segmentation) result_.segmentation.move_planned = moves.moved;
+        // The rounds may borrow the input's triangles (RoundMesh): the counting beside, which
+        // reads them, ends first (it is long done by now: it started with the moves' planning).
+        Mesh* const lender = owned_ && &mesh == owned_ ? owned_ : nullptr;
+        if (lender) beside.wait();
         for (int round = 0; round < options_.max_harm_rounds && moves.moved_count > 0; ++round) {
             ++report_.move_rounds;
             // The moved mesh takes the planned places for the round, which reads only the
@@ -669,15 +701,17 @@ private:
             // The input's normals likewise: nothing in the round reads them (the harm check
             // takes the input's face normals from the moved mesh's, check_harm()), and they
             // come back unless the round ends the restoration.
-            Mesh moved;
-            moved.positions = std::move(moves.position);
-            moved.triangles = mesh.triangles;
-            Detection detection = detect_bands_after_moves(
-                moved, segmented, std::move(input.normals), moves.moved, options_);
-            add_times(detection.stage_time);
-            const HarmReference reference{mesh.positions, moves.moved};
-            BandRestoration restored = restore_detected(moved, detection, duplicates, &reference);
-            moves.position = std::move(moved.positions);
+            BandRestoration restored;
+            Detection detection;
+            {
+                RoundMesh moved(mesh, lender, std::move(moves.position));
+                detection = detect_bands_after_moves(
+                    moved.mesh(), segmented, std::move(input.normals), moves.moved, options_);
+                add_times(detection.stage_time);
+                const HarmReference reference{mesh.positions, moves.moved};
+                restored = restore_detected(moved.mesh(), detection, duplicates, &reference);
+                moves.position = moved.take_places();
+            }
             if (!restored.rounds_exhausted && restored.unexplained_harm.empty()) {
                 take(std::move(restored));
                 report_.output_unchanged = false;  // the moves changed it, points or not
