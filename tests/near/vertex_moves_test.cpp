@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "resharp/core/errors.h"
+#include "resharp/mesh/connectivity.h"
 #include "resharp/pipeline/restore.h"
 #include "resharp/sim/csg_file.h"
 #include "support/small_parts.h"
@@ -370,6 +371,44 @@ TEST(VertexMoves, WithoutMovesOfFacesGivesThoseVerticesBack) {
             EXPECT_FALSE(fewer.moved[v]);
             EXPECT_EQ(fewer.position[v], p.mesh.positions[v]);
         }
+    }
+}
+
+TEST(VertexMoves, MovesThatTurnAFaceOverAreTakenBackBeforeTheRound) {
+    // A flat 4 x 4 grid of unit squares, each cut in two, normals up. Vertex (1, 1) moved past
+    // (2, 1) turns faces around it over; vertex (3, 3), lifted a little, turns none, and its
+    // faces do not touch (1, 1)'s.
+    Mesh grid;
+    for (int j = 0; j < 4; ++j) {
+        for (int i = 0; i < 4; ++i) grid.positions.emplace_back(i, j, 0.0);
+    }
+    const auto at = [](int i, int j) { return static_cast<Index>(4 * j + i); };
+    for (int j = 0; j < 3; ++j) {
+        for (int i = 0; i < 3; ++i) {
+            grid.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            grid.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    }
+    const Connectivity c = build_connectivity(grid);
+    VertexMoves moves{grid.positions, std::vector<std::uint8_t>(16, 0), 1, 0.1};
+    moves.position[at(3, 3)].z() = 0.1;
+    moves.moved[at(3, 3)] = 1;
+    const VertexMoves harmless = without_turned_over_faces(grid, c, moves);
+    EXPECT_EQ(harmless.moved_count, 1u);
+    EXPECT_TRUE(harmless.moved[at(3, 3)]);
+    moves.position[at(1, 1)] = Vec3(2.6, 1.0, 0.0);
+    moves.moved[at(1, 1)] = 1;
+    moves.moved_count = 2;
+    moves.largest_move = 1.6;
+    const VertexMoves kept = without_turned_over_faces(grid, c, moves);
+    EXPECT_FALSE(kept.moved[at(1, 1)]);
+    EXPECT_EQ(kept.position[at(1, 1)], grid.positions[at(1, 1)]);
+    EXPECT_TRUE(kept.moved[at(3, 3)]);
+    EXPECT_EQ(kept.moved_count, 1u);
+    EXPECT_DOUBLE_EQ(kept.largest_move, 0.1);
+    for (const Triangle& t : grid.triangles) {
+        const auto& x = kept.position;
+        EXPECT_GT((x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).z(), 0.0);
     }
 }
 

@@ -14,6 +14,7 @@
 
 #include "resharp/core/errors.h"
 #include "resharp/core/parallel.h"
+#include "resharp/mesh/geometry.h"
 #include "resharp/surfaces/plane_fit.h"
 
 namespace resharp {
@@ -1142,17 +1143,48 @@ Mesh moved_mesh(const Mesh& mesh, const VertexMoves& moves) {
     return moved;
 }
 
+namespace {
+
+/// Takes back the moves of the corners of `faces` (input face indices) and recounts.
+void undo_moves_of(const Mesh& mesh, const std::vector<Index>& faces, VertexMoves& moves) {
+    for (Index f : faces) {
+        for (Index v : mesh.triangles[f]) {
+            moves.moved[v] = 0;
+            moves.position[v] = mesh.positions[v];
+        }
+    }
+    recount(mesh.positions, moves);
+}
+
+/// Twice the area, as a vector along the normal, of triangle t at `places`.
+Vec3 area_vector(const std::vector<Vec3>& places, const Triangle& t) {
+    return (places[t[1]] - places[t[0]]).cross(places[t[2]] - places[t[0]]);
+}
+
+}  // namespace
+
 VertexMoves without_moves_of(const Mesh& mesh, const VertexMoves& moves,
                              const std::vector<Index>& faces) {
     VertexMoves fewer = moves;
-    for (Index f : faces) {
-        for (Index v : mesh.triangles[f]) {
-            fewer.moved[v] = 0;
-            fewer.position[v] = mesh.positions[v];
-        }
-    }
-    recount(mesh.positions, fewer);
+    undo_moves_of(mesh, faces, fewer);
     return fewer;
+}
+
+VertexMoves without_turned_over_faces(const Mesh& mesh, const Connectivity& connectivity,
+                                      VertexMoves moves) {
+    // Bound: every pass that does not end the loop takes back at least one move.
+    while (moves.moved_count > 0) {
+        std::vector<Index> turned;
+        for (Index f : faces_with_moved_corner(mesh, connectivity, moves.moved)) {
+            const Triangle& t = mesh.triangles[f];
+            const Vec3 before = area_vector(mesh.positions, t);
+            if (before.squaredNorm() > 0.0 && before.dot(area_vector(moves.position, t)) <= 0.0)
+                turned.push_back(f);
+        }
+        if (turned.empty()) break;
+        undo_moves_of(mesh, turned, moves);
+    }
+    return moves;
 }
 
 }  // namespace resharp

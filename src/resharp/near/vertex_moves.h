@@ -123,4 +123,14 @@ Mesh moved_mesh(const Mesh& mesh, const VertexMoves& moves);
 VertexMoves without_moves_of(const Mesh& mesh, const VertexMoves& moves,
                              const std::vector<Index>& faces);
 
+/// `moves` (of `mesh`, the input, with its connectivity) less the moves of the corners of every
+/// face they turn over: its normal at the planned places against its input one, or no area. The
+/// harm check refuses such a face as a rule, but only a round later (a move's harm ends a round
+/// and the next restores anew: on mech by OpenVDB the four faces of its first round's moved
+/// harm, and the second round made the restoration take twice the time). Repeated until no face
+/// is turned over (a move taken back can turn a face beside it); a degenerate input face counts
+/// for nothing. Bound: each pass but the last takes back a move.
+VertexMoves without_turned_over_faces(const Mesh& mesh, const Connectivity& connectivity,
+                                      VertexMoves moves);
+
 }  // namespace resharp

@@ -89,8 +89,10 @@ struct RestoreReport {
     double grid_pitch = 0.0;          ///< of the grid moves were bounded by; 0 if none
     std::size_t moved_vertices = 0;   ///< input vertices moved in the output
     double largest_move = 0.0;        ///< mm
-    std::size_t moves_undone = 0;     ///< planned moves the harm check gave up
-    std::size_t move_rounds = 0;      ///< rounds of moves, restoration and check against the input
+    /// Planned moves given up: those that turn a face over, before the rounds, and those the
+    /// harm check gave up.
+    std::size_t moves_undone = 0;
+    std::size_t move_rounds = 0;  ///< rounds of moves, restoration and check against the input
     /// Near: patches taken for a dual mesher's bevel across a concave edge and given back to the
     /// band before the moves (near/concave_bevels.h).
     std::size_t bevels_dissolved = 0;

@@ -680,6 +680,11 @@ private:
         const InputSurface surface = input.surface(mesh);
         std::optional<Detection> smoothed;
         VertexMoves moves = plan_moves(surface, input, choice, smoothed);
+        if (options_.keep_segmentation) result_.segmentation.move_planned = moves.moved;
+        // Moves that turn a face over are given up before the first round, not after it.
+        const std::size_t planned = moves.moved_count;
+        moves = without_turned_over_faces(mesh, *input.connectivity, std::move(moves));
+        report_.moves_undone += planned - moves.moved_count;
         // Nothing but the fallback below reads the input's bands and feature normals: where
         // rounds follow, they go before the rounds allocate, and the fallback makes them anew
         // (peak memory). Midpoint: gone already, with the segmentations.
@@ -689,7 +694,6 @@ private:
             input.feature_normals = {};
         }
         const Detection& segmented = smoothed ? *smoothed : input;
-        if (options_.keep_segmentation) result_.segmentation.move_planned = moves.moved;
         // The rounds may borrow the input's triangles (RoundMesh): the counting beside, which
         // reads them, ends first (it is long done by now: it started with the moves' planning).
         Mesh* const lender = owned_ && &mesh == owned_ ? owned_ : nullptr;
