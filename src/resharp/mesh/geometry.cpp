@@ -31,8 +31,10 @@ Vec3 triangle_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
 }
 
 double longest_edge_squared(const Mesh& mesh, Index f) {
-    const Triangle& t = mesh.triangles[f];
-    const auto& x = mesh.positions;
+    return longest_edge_squared(mesh.positions, mesh.triangles[f]);
+}
+
+double longest_edge_squared(std::span<const Vec3> x, const Triangle& t) {
     return std::max({(x[t[1]] - x[t[0]]).squaredNorm(), (x[t[2]] - x[t[1]]).squaredNorm(),
                      (x[t[0]] - x[t[2]]).squaredNorm()});
 }

@@ -16,6 +16,8 @@ Vec3 triangle_normal(const Vec3& a, const Vec3& b, const Vec3& c);
 
 /// Squared length of face f's longest edge: the face's size, which relative tolerances scale by.
 double longest_edge_squared(const Mesh& mesh, Index f);
+/// The same of triangle t at `positions` (a mesh's faces at other places of its vertices).
+double longest_edge_squared(std::span<const Vec3> positions, const Triangle& t);
 
 /// Interior angle (radians) at corner k of face f.
 double corner_angle(const Mesh& mesh, Index f, int k);

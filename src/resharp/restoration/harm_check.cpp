@@ -581,7 +581,8 @@ private:
             against = std::min(against, distance_squared(q, candidates.faces[j]));
         }
         if (against == kInfinity) return false;  // no face turned against is near enough
-        const double tie = kTouchRatio * std::sqrt(input_size_squared(f));
+        const double tie = kTouchRatio * std::sqrt(longest_edge_squared(input_positions_,
+                                                                        input_.mesh.triangles[f]));
         const double reach = std::sqrt(against) + tie;  // as near as the faces turned against
         if (!(reach < std::sqrt(other))) return false;
         for (std::size_t j = 0; j < candidates.faces.size(); ++j) {
@@ -599,15 +600,6 @@ private:
     /// rounding so that it never exceeds the measured distance.
     static double least_distance_squared(const Vec3& q, const Box3& box) {
         return box.squaredExteriorDistance(q) * (1.0 - 1e-12);
-    }
-
-    /// Squared length of input face f's longest edge (longest_edge_squared() at its input
-    /// corners).
-    double input_size_squared(Index f) const {
-        const Triangle& t = input_.mesh.triangles[f];
-        const auto& x = input_positions_;
-        return std::max({(x[t[1]] - x[t[0]]).squaredNorm(), (x[t[2]] - x[t[1]]).squaredNorm(),
-                         (x[t[0]] - x[t[2]]).squaredNorm()});
     }
 
     double distance_squared(const Vec3& q, Index g) const {
