@@ -1156,11 +1156,6 @@ void undo_moves_of(const Mesh& mesh, const std::vector<Index>& faces, VertexMove
     recount(mesh.positions, moves);
 }
 
-/// Twice the area, as a vector along the normal, of triangle t at `places`.
-Vec3 area_vector(const std::vector<Vec3>& places, const Triangle& t) {
-    return (places[t[1]] - places[t[0]]).cross(places[t[2]] - places[t[0]]);
-}
-
 }  // namespace
 
 VertexMoves without_moves_of(const Mesh& mesh, const VertexMoves& moves,
@@ -1177,8 +1172,11 @@ VertexMoves without_turned_over_faces(const Mesh& mesh, const Connectivity& conn
         std::vector<Index> turned;
         for (Index f : faces_with_moved_corner(mesh, connectivity, moves.moved)) {
             const Triangle& t = mesh.triangles[f];
-            const Vec3 before = area_vector(mesh.positions, t);
-            if (before.squaredNorm() > 0.0 && before.dot(area_vector(moves.position, t)) <= 0.0)
+            const auto& x = mesh.positions;
+            const auto& y = moves.position;
+            const Vec3 before = triangle_normal(x[t[0]], x[t[1]], x[t[2]]);
+            if (!before.isZero(0.0) &&
+                before.dot(triangle_normal(y[t[0]], y[t[1]], y[t[2]])) <= 0.0)
                 turned.push_back(f);
         }
         if (turned.empty()) break;
