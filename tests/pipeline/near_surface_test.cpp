@@ -179,6 +179,32 @@ Mesh chamfered_block_by_surface_nets() {
     return sim::mesh_dexels(grid, meshing).mesh;
 }
 
+// The chamfered block by surface nets has faces without points that its moves turn more than
+// 90 degrees against the input faces nearest them (as measured when this test was written):
+// the harm check finds them in the first round. Their moves are given up within the harm
+// rounds, the moved mesh is not restored again, and those vertices keep their input places.
+TEST(NearSurface, MovesTheHarmCheckRefusesAreGivenUpWithinTheHarmRounds) {
+    const Mesh input = chamfered_block_by_surface_nets();
+    RestoreOptions one_round;
+    one_round.max_harm_rounds = 1;
+    const RestoreResult given_up = restore(input, one_round);
+    ASSERT_EQ(given_up.report.moved_vertices, 0u);  // the first round found harm: exact path
+    const RestoreOptions options;
+    const RestoreResult r = restore(input, options);
+    ASSERT_EQ(r.report.vertex_placement, "near");
+    EXPECT_EQ(r.report.move_rounds, 1u);
+    EXPECT_GE(r.report.harm_rounds, 2u);
+    EXPECT_GT(r.report.moves_undone, 0u);
+    EXPECT_GT(r.report.moved_vertices, 0u);
+    EXPECT_GT(r.report.edge_points_inserted, 0u);
+    std::size_t moved = 0;
+    for (std::size_t v = 0; v < input.vertex_count(); ++v) {
+        moved += r.mesh.positions[v] != input.positions[v];
+    }
+    EXPECT_EQ(moved, r.report.moved_vertices);
+    test::expect_no_harm(input, r, options);
+}
+
 // A flat strip of facets tells how a small cylinder turns only where the vertices lie on the
 // surface: on a surface-nets mesh the border of a wide chamfer is such a strip too
 // (FeatureNormalOptions::vertices_on_surface), and its edge would pass for smooth.

@@ -1158,11 +1158,9 @@ void undo_moves_of(const Mesh& mesh, const std::vector<Index>& faces, VertexMove
 
 }  // namespace
 
-VertexMoves without_moves_of(const Mesh& mesh, const VertexMoves& moves,
-                             const std::vector<Index>& faces) {
-    VertexMoves fewer = moves;
-    undo_moves_of(mesh, faces, fewer);
-    return fewer;
+VertexMoves recounted(const std::vector<Vec3>& input, VertexMoves moves) {
+    recount(input, moves);
+    return moves;
 }
 
 VertexMoves without_turned_over_faces(const Mesh& mesh, const Connectivity& connectivity,

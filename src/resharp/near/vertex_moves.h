@@ -118,10 +118,9 @@ VertexMoves plan_vertex_moves(const InputSurface& current, const std::vector<Vec
 /// The mesh with every vertex at its planned position; faces as they were.
 Mesh moved_mesh(const Mesh& mesh, const VertexMoves& moves);
 
-/// `moves` less the moves of the vertices of `faces` (input face indices, as the harm check
-/// names them); its counts recounted.
-VertexMoves without_moves_of(const Mesh& mesh, const VertexMoves& moves,
-                             const std::vector<Index>& faces);
+/// `moves` with its flags and counts made again from its places against the input places
+/// (#V): after some of its vertices were put back.
+VertexMoves recounted(const std::vector<Vec3>& input, VertexMoves moves);
 
 /// `moves` (of `mesh`, the input, with its connectivity) less the moves of the corners of every
 /// face they turn over: its normal at the planned places against its input one, or no area. The

@@ -89,10 +89,12 @@ struct RestoreReport {
     double grid_pitch = 0.0;          ///< of the grid moves were bounded by; 0 if none
     std::size_t moved_vertices = 0;   ///< input vertices moved in the output
     double largest_move = 0.0;        ///< mm
-    /// Planned moves given up: those that turn a face over, before the rounds, and those the
-    /// harm check gave up.
+    /// Planned moves given up: those that turn a face over, before the restoration, those the
+    /// harm check gave up within its rounds, and all of them where the rounds ran out.
     std::size_t moves_undone = 0;
-    std::size_t move_rounds = 0;  ///< rounds of moves, restoration and check against the input
+    /// Restorations of a moved mesh checked against the input: 1 where vertices were to move
+    /// (the moves the harm check gives up are given up within it), else 0.
+    std::size_t move_rounds = 0;
     /// Near: patches taken for a dual mesher's bevel across a concave edge and given back to the
     /// band before the moves (near/concave_bevels.h).
     std::size_t bevels_dissolved = 0;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <optional>
 #include <string>
 
@@ -115,6 +116,56 @@ void withdraw_points_of(const std::vector<Index>& faces, const PointSlots& slots
             withdrawn[p] = 1;
         });
     }
+}
+
+/// The faces within `rings` rings of `vertices`, ascending: those around them, then those
+/// around the corners of those, and so on. Bound: rings times the faces reached.
+std::vector<Index> faces_within_rings(const InputSurface& surface, std::vector<Index> vertices,
+                                      int rings) {
+    std::vector<std::uint8_t> reached_vertex(surface.mesh.vertex_count(), 0);
+    std::vector<std::uint8_t> reached_face(surface.mesh.face_count(), 0);
+    std::vector<Index> faces;
+    for (Index v : vertices) reached_vertex[v] = 1;
+    for (int ring = 0; ring < rings; ++ring) {
+        std::vector<Index> next;
+        for (Index v : vertices) {
+            for (Index f : surface.connectivity.faces_around(v)) {
+                if (reached_face[f]) continue;
+                reached_face[f] = 1;
+                faces.push_back(f);
+                for (Index w : surface.mesh.triangles[f]) {
+                    if (!reached_vertex[w]) next.push_back(w);
+                    reached_vertex[w] = 1;
+                }
+            }
+        }
+        vertices = std::move(next);
+    }
+    std::sort(faces.begin(), faces.end());
+    return faces;
+}
+
+/// With a reference: the harmful faces that hold no point did harm by their moves (every
+/// face the check judges holds points or has a moved corner). Gives those moves up through the
+/// reference (see restore_bands()) and adds to `harmful` the faces within three rings of the
+/// vertices put back, whose points go with them.
+void give_up_moves_of_pointless(const InputSurface& input, const HarmReference& reference,
+                                const PointSlots& accepted, std::vector<Index>& harmful,
+                                BandRestoration& r) {
+    std::vector<Index> without_points;
+    for (Index f : harmful) {
+        if (!accepted.has_points(f)) without_points.push_back(f);
+    }
+    if (without_points.empty()) return;
+    const std::vector<Index> put_back = reference.give_up_moves(without_points);
+    RESHARP_ASSERT(!put_back.empty());
+    r.moves_given_up += put_back.size();
+    constexpr int kReach = 3;  // the feature normals' fits and the guard's normals
+    const std::vector<Index> near = faces_within_rings(input, put_back, kReach);
+    std::vector<Index> joined;
+    std::set_union(harmful.begin(), harmful.end(), near.begin(), near.end(),
+                   std::back_inserter(joined));
+    harmful = std::move(joined);
 }
 
 /// Per face (#F): 1 where the slots of `after` differ from those of `before` (so its pieces do).
@@ -335,7 +386,11 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
         // known, the last round's slots go before the split allocates (peak memory).
         // (Untimed: one pass over the faces, and no stage of its own to ask `stop` before.)
         std::vector<std::uint8_t> changed;
-        if (round > 0) changed = changed_faces(checked.accepted, guarded.accepted);
+        if (round > 0) {
+            changed = changed_faces(checked.accepted, guarded.accepted);
+            // A harmful face whose corners went back kept its slots, not its pieces.
+            for (Index f : harmful) changed[f] = 1;
+        }
         checked = std::move(guarded);
         clock.run(Stage::Split,
                   [&] { r.output = split_faces(input.mesh, r.points.points, checked.accepted); });
@@ -351,18 +406,14 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
             r.withdrawn = std::move(withdrawn);
             return r;
         }
+        [[maybe_unused]] const std::size_t before = r.undone_points + r.moves_given_up;
         if (reference) {
-            // Harm on a face without points comes from the moves: only the caller can undo it.
-            for (Index f : harm.harmful_faces) {
-                if (!checked.accepted.has_points(f)) r.unexplained_harm.push_back(f);
-            }
-            if (!r.unexplained_harm.empty()) return r;
+            give_up_moves_of_pointless(input, *reference, checked.accepted, harm.harmful_faces, r);
         }
-        [[maybe_unused]] const std::size_t before = r.undone_points;
         withdrawn_before = withdrawn;
         withdraw_points_of(harm.harmful_faces, checked.accepted, withdrawn, r.undone_points);
         harmful = std::move(harm.harmful_faces);
-        RESHARP_ASSERT(r.undone_points > before);
+        RESHARP_ASSERT(r.undone_points + r.moves_given_up > before);
     }
     r.rounds_exhausted = true;
     r.output = unchanged(input.mesh);
@@ -376,7 +427,7 @@ namespace {
 /// Per face (#F): how far the points of each edge or corner triangle got in `r`.
 std::vector<PointFate> point_fates(const BandClassification& bands, const BandRestoration& r) {
     std::vector<PointFate> fate(bands.face_role.size(), PointFate::None);
-    const bool kept = !r.rounds_exhausted && r.unexplained_harm.empty();
+    const bool kept = !r.rounds_exhausted;
     for (Index f = 0; f < fate.size(); ++f) {
         if (bands.face_role[f] == BandRole::None) continue;
         bool candidate = false, withdrawn = false;
@@ -426,6 +477,8 @@ public:
     RoundMesh& operator=(const RoundMesh&) = delete;
 
     const Mesh& mesh() const { return moved_; }
+    /// Puts vertex v back at its input place: its move given up during the round.
+    void put_back(Index v, const Vec3& input_place) { moved_.positions[v] = input_place; }
     /// The places, given back for the next round (the mesh holds none after).
     std::vector<Vec3> take_places() { return std::move(moved_.positions); }
 
@@ -671,9 +724,8 @@ private:
 
     /// Near-surface restoration (issue 14, near/vertex_moves.h): vertices moved onto the sides
     /// fitted around them, the paper's method on the moved mesh, and the result held against
-    /// the input itself; moves whose faces do harm are given up and the rest tried again.
-    /// Bound: options.max_harm_rounds rounds, each but the last giving up at least one move;
-    /// past it, or where harm remains that no move explains, the exact path on the input.
+    /// the input itself; moves whose faces do harm are given up within the harm rounds
+    /// (restore_bands()). Where those rounds run out, the exact path on the input.
     /// `beside`: the work run beside the restoration, which reads the input mesh.
     void restore_near(const Mesh& mesh, Detection& input, const PlacementChoice& choice,
                       const DuplicateFaces& duplicates, tbb::task_group& beside) {
@@ -698,7 +750,7 @@ private:
         // reads them, ends first (it is long done by now: it started with the moves' planning).
         Mesh* const lender = owned_ && &mesh == owned_ ? owned_ : nullptr;
         if (lender) beside.wait();
-        for (int round = 0; round < options_.max_harm_rounds && moves.moved_count > 0; ++round) {
+        if (moves.moved_count > 0) {
             ++report_.move_rounds;
             // The moved mesh takes the planned places for the round, which reads only the
             // flags, and gives them back after it: one copy of them alive, not two (peak memory).
@@ -712,11 +764,16 @@ private:
                 detection = detect_bands_after_moves(
                     moved.mesh(), segmented, std::move(input.normals), moves.moved, options_);
                 add_times(detection.stage_time);
-                const HarmReference reference{mesh.positions, moves.moved};
+                auto give_up = [&](const std::vector<Index>& faces) {
+                    return give_up_moves(mesh, faces, moved, moves.moved, detection);
+                };
+                const HarmReference reference{mesh.positions, moves.moved, give_up};
                 restored = restore_detected(moved.mesh(), detection, duplicates, &reference);
                 moves.position = moved.take_places();
             }
-            if (!restored.rounds_exhausted && restored.unexplained_harm.empty()) {
+            report_.moves_undone += restored.moves_given_up;
+            moves = recounted(mesh.positions, std::move(moves));
+            if (!restored.rounds_exhausted) {
                 take(std::move(restored));
                 report_.output_unchanged = false;  // the moves changed it, points or not
                 report_.moved_vertices = moves.moved_count;
@@ -725,11 +782,6 @@ private:
             }
             input.normals = surface_normals_after_moves(mesh, *input.connectivity,
                                                         std::move(detection.normals), moves.moved);
-            if (restored.rounds_exhausted) break;  // its unchanged moved mesh was not checked
-            VertexMoves fewer = without_moves_of(mesh, moves, restored.unexplained_harm);
-            if (fewer.moved_count == moves.moved_count) break;  // harm no move explains
-            report_.moves_undone += moves.moved_count - fewer.moved_count;
-            moves = std::move(fewer);
         }
         report_.moves_undone += moves.moved_count;
         if (smoothed) {
@@ -740,6 +792,29 @@ private:
             classify_and_fit_normals(mesh, input, options_, clock);
         }
         take(restore_detected(mesh, input, duplicates));
+    }
+
+    /// The round's give_up_moves (HarmReference): the moved corners of `faces` go back to their
+    /// places in `mesh` (the input), in the round's moved mesh and its flags `moved`, and the
+    /// detection's normals are made again around them.
+    static std::vector<Index> give_up_moves(const Mesh& mesh, const std::vector<Index>& faces,
+                                            RoundMesh& round, std::vector<std::uint8_t>& moved,
+                                            Detection& detection) {
+        std::vector<Index> put_back;
+        std::vector<std::uint8_t> flags(mesh.vertex_count(), 0);
+        for (Index f : faces) {
+            for (Index v : round.mesh().triangles[f]) {  // the input's may be lent to the round
+                if (!moved[v]) continue;
+                moved[v] = 0;
+                flags[v] = 1;
+                round.put_back(v, mesh.positions[v]);
+                put_back.push_back(v);
+            }
+        }
+        std::sort(put_back.begin(), put_back.end());
+        detection.normals = surface_normals_after_moves(round.mesh(), *detection.connectivity,
+                                                        std::move(detection.normals), flags);
+        return put_back;
     }
 
     void add_times(const std::array<std::chrono::nanoseconds, kStageCount>& times) {

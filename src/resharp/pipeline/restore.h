@@ -6,6 +6,7 @@
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -122,22 +123,20 @@ Detection detect_bands_after_moves(const Mesh& mesh, const Detection& before,
 
 /// The second half of restore(): points placed on the bands (eq. 5.2-5.5), then rounds of
 /// guard, split and harm check; each round withdraws the points of the faces whose pieces did
-/// harm, until a round finds none (at most options.max_harm_rounds rounds; each round but the
-/// first has at least one point fewer, so also at most one round more than points).
+/// harm (or, near-surface, gives up moves), until a round finds none (at most
+/// options.max_harm_rounds rounds; each round but the first has at least one point or one move
+/// fewer).
 struct BandRestoration {
     SplitMesh output;     ///< the last round's split; the input itself when given up
     SharpPoints points;   ///< the placed candidates
     PointSlots accepted;  ///< the last round's guarded slots, the points `output` holds
     std::vector<std::uint8_t> withdrawn;  ///< per candidate (#P): withdrawn by the harm check
-    /// With a HarmReference: the harmful faces of the last round that hold no point to withdraw
-    /// (their harm comes from the moves). Not empty: the output is not harmless, and the caller
-    /// gives up those faces' moves.
-    std::vector<Index> unexplained_harm;
-    GuardReport guard;      ///< summed over the rounds
-    HarmReport first_harm;  ///< what the first round's check found
+    GuardReport guard;                    ///< summed over the rounds
+    HarmReport first_harm;                ///< what the first round's check found
     std::size_t rounds = 0;
     std::size_t undone_points = 0;
-    bool rounds_exhausted = false;  ///< harm remained after the last round: nothing inserted
+    std::size_t moves_given_up = 0;  ///< vertices put back by `give_up_moves`
+    bool rounds_exhausted = false;   ///< harm remained after the last round: nothing inserted
     std::array<std::chrono::nanoseconds, kStageCount> stage_time{};  ///< of the stages run
 };
 
@@ -148,12 +147,19 @@ struct BandRestoration {
 struct HarmReference {
     std::span<const Vec3> input_positions;
     std::span<const std::uint8_t> moved;
+    /// Gives up the moves of the corners of `faces` (harmful faces that hold no point): puts
+    /// those vertices back at their input places in the surface being split, clears their
+    /// flags in `moved` and makes the surface's normals around them again; gives the vertices
+    /// put back, ascending.
+    std::function<std::vector<Index>(const std::vector<Index>& faces)> give_up_moves;
 };
 
 /// Takes the surface to split, its bands and the feature normals (#V) to place points with, and
 /// optionally the surface to check the split against (null: `input` itself). With a
-/// reference, a round whose harmful faces are not all faces with points ends the rounds and
-/// names them in `unexplained_harm`.
+/// reference, harm on faces that hold no point is the moves': their moves are given up
+/// (`give_up_moves`) and the points of the faces within three rings of the vertices put back
+/// withdrawn (placed and guarded from the moved places: the fits of the feature normals and
+/// the guard's normals reach that far), and the rounds go on.
 /// \throws Cancelled when options.stop fires between two rounds; InvalidInput for options out
 ///         of range.
 BandRestoration restore_bands(const InputSurface& input, const BandClassification& bands,
