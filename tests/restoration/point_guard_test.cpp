@@ -349,8 +349,8 @@ void expect_guard_again_equals_full_guard(unsigned seed, double spread, double w
     for (int round = 0; round < 3; ++round) {
         for (std::uint8_t& w : now) w = w || withdraw(random);
         const GuardedPoints full = guard_points(surface, d.feature_normals, points, now);
-        const GuardedPoints again =
-            guard_points_again(surface, d.feature_normals, points, last, before, now, every_face);
+        const GuardedPoints again = guard_points_again(surface, d.feature_normals, points, last,
+                                                       before, now, every_face, {});
         EXPECT_TRUE(again.accepted == full.accepted) << "round " << round;
         EXPECT_EQ(again.report.refused_by_quality, full.report.refused_by_quality);
         EXPECT_EQ(again.report.refused_by_guard, full.report.refused_by_guard);
@@ -368,22 +368,74 @@ TEST(Guard, AGuardAgainEqualsAFullGuard) {
     for (unsigned seed : {1u, 2u, 3u}) expect_guard_again_equals_full_guard(seed, 0.1, 0.03);
 }
 
+/// Near-surface restoration puts moved vertices back between rounds: a guard again told the
+/// faces within three rings of them (`reshaped`) gives what a full guard gives on the surface as
+/// it now is, though no point was withdrawn.
+TEST(Guard, AGuardAgainAfterVerticesMovedEqualsAFullGuard) {
+    const JitteredPlate plate(5, 0.1);
+    const Detection& d = plate.d;
+    const Connectivity& connectivity = *d.connectivity;
+    const SharpPoints& points = plate.points;
+    const GuardedPoints first = guard_points(plate.surface(), d.feature_normals, points, {});
+    // Every fifth corner of the faces holding candidates, moved by a third of a pitch.
+    Mesh mesh = plate.shape.mesh;
+    std::vector<Index> shifted;
+    std::vector<std::uint8_t> seen(mesh.vertex_count(), 0);
+    for (Index f = 0; f < mesh.face_count(); ++f) {
+        if (!points.slots.has_points(f)) continue;
+        for (Index v : mesh.triangles[f]) {
+            if (!seen[v]++ && shifted.size() % 5 == 0) {
+                mesh.positions[v] += Vec3(0.2, -0.1, 0.25) * plate.shape.pitch;
+            }
+            if (seen[v] == 1) shifted.push_back(v);
+        }
+    }
+    ASSERT_GT(shifted.size(), 20u);
+    std::vector<Index> reshaped;
+    std::vector<std::uint8_t> reached(mesh.face_count(), 0);
+    std::vector<Index> ring = shifted;
+    for (int step = 0; step < 3; ++step) {
+        std::vector<Index> next;
+        for (Index v : ring) {
+            for (Index f : connectivity.faces_around(v)) {
+                if (reached[f]++) continue;
+                reshaped.push_back(f);
+                next.insert(next.end(), mesh.triangles[f].begin(), mesh.triangles[f].end());
+            }
+        }
+        ring = std::move(next);
+    }
+    const SurfaceNormals normals = surface_normals(mesh, connectivity);
+    const InputSurface surface{mesh, connectivity, normals};
+    const std::vector<std::uint8_t> none(points.points.size(), 0);
+    const GuardedPoints full = guard_points(surface, d.feature_normals, points, none);
+    const GuardedPoints again =
+        guard_points_again(surface, d.feature_normals, points, first, {}, none, {}, reshaped);
+    ASSERT_FALSE(full.accepted == first.accepted);  // the moves change something
+    EXPECT_TRUE(again.accepted == full.accepted);
+    EXPECT_EQ(again.report.refused_by_quality, full.report.refused_by_quality);
+    EXPECT_EQ(again.report.refused_by_guard, full.report.refused_by_guard);
+    EXPECT_EQ(again.report.repairs, full.report.repairs);
+}
+
 TEST(Guard, AGuardAgainChecksItsFlags) {
     const test::Strip s = test::make_strip();
     const SharpPoints points = test::points_on_edge_a1_b0(s);
     const GuardedPoints first = guard(s, points);
     const std::vector<std::uint8_t> one{1}, wrong_size{1, 0};
     const std::vector<Index> face_0{0}, face_9{9};
-    EXPECT_FALSE(guard_points_again(s.surface(), s.feature_normals, points, first, {}, one, face_0)
-                     .accepted.has_points(0));
-    EXPECT_THROW(
-        guard_points_again(s.surface(), s.feature_normals, points, first, wrong_size, one, face_0),
-        InvalidInput);
-    EXPECT_THROW(
-        guard_points_again(s.surface(), s.feature_normals, points, first, {}, wrong_size, face_0),
-        InvalidInput);
-    EXPECT_THROW(guard_points_again(s.surface(), s.feature_normals, points, first, {}, one, face_9),
+    EXPECT_FALSE(
+        guard_points_again(s.surface(), s.feature_normals, points, first, {}, one, face_0, {})
+            .accepted.has_points(0));
+    EXPECT_THROW(guard_points_again(s.surface(), s.feature_normals, points, first, wrong_size, one,
+                                    face_0, {}),
                  InvalidInput);
+    EXPECT_THROW(guard_points_again(s.surface(), s.feature_normals, points, first, {}, wrong_size,
+                                    face_0, {}),
+                 InvalidInput);
+    EXPECT_THROW(
+        guard_points_again(s.surface(), s.feature_normals, points, first, {}, one, face_9, {}),
+        InvalidInput);
 }
 
 }  // namespace

@@ -147,25 +147,25 @@ std::vector<Index> faces_within_rings(const InputSurface& surface, std::vector<I
 
 /// With a reference: the harmful faces that hold no point did harm by their moves (every
 /// face the check judges holds points or has a moved corner). Gives those moves up through the
-/// reference (see restore_bands()) and adds to `harmful` the faces within three rings of the
-/// vertices put back, whose points go with them.
-void give_up_moves_of_pointless(const InputSurface& input, const HarmReference& reference,
-                                const PointSlots& accepted, std::vector<Index>& harmful,
-                                BandRestoration& r) {
+/// reference (see restore_bands()); gives the faces within three rings of the vertices put
+/// back, whose guard and check read what changed (none if no move was given up).
+std::vector<Index> give_up_moves_of_pointless(const InputSurface& input,
+                                              const HarmReference& reference,
+                                              const PointSlots& accepted,
+                                              const std::vector<Index>& harmful,
+                                              BandRestoration& r) {
     std::vector<Index> without_points;
     for (Index f : harmful) {
         if (!accepted.has_points(f)) without_points.push_back(f);
     }
-    if (without_points.empty()) return;
+    if (without_points.empty()) return {};
     const std::vector<Index> put_back = reference.give_up_moves(without_points);
     RESHARP_ASSERT(!put_back.empty());
     r.moves_given_up += put_back.size();
-    constexpr int kReach = 3;  // the feature normals' fits and the guard's normals
-    const std::vector<Index> near = faces_within_rings(input, put_back, kReach);
-    std::vector<Index> joined;
-    std::set_union(harmful.begin(), harmful.end(), near.begin(), near.end(),
-                   std::back_inserter(joined));
-    harmful = std::move(joined);
+    // A face's guard reads its corners' normals and its neighbours' slots; the normals made
+    // again reach the corners of the faces around the vertices put back.
+    constexpr int kReach = 3;
+    return faces_within_rings(input, put_back, kReach);
 }
 
 /// Per face (#F): 1 where the slots of `after` differ from those of `before` (so its pieces do).
@@ -358,6 +358,7 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
     std::vector<std::uint8_t> withdrawn(r.points.points.size(), 0);
     std::vector<std::uint8_t> withdrawn_before;  // the flags of the last round's guard
     std::vector<Index> harmful;                  // the faces the last check found harmful
+    std::vector<Index> reshaped;                 // the faces near the moves the last check gave up
     GuardedPoints checked;                       // the last guard's result, its split checked
     // Bound: max_harm_rounds; and every round that does not end the loop withdraws at least one
     // point (harmful faces are split faces, which hold points).
@@ -370,10 +371,10 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
         clock.run(Stage::Guard, [&] {
             // Nothing is withdrawn before the first check: no flags to read. Later rounds guard
             // again only the faces whose work the withdrawn points can change.
-            guarded = round == 0
-                          ? guard_points(input, feature_normals, r.points, {}, options.guard)
-                          : guard_points_again(input, feature_normals, r.points, checked,
-                                               withdrawn_before, withdrawn, harmful, options.guard);
+            guarded = round == 0 ? guard_points(input, feature_normals, r.points, {}, options.guard)
+                                 : guard_points_again(input, feature_normals, r.points, checked,
+                                                      withdrawn_before, withdrawn, harmful,
+                                                      reshaped, options.guard);
             RESHARP_EXPENSIVE_ASSERT(
                 round == 0 || same_guard(guarded, guard_points(input, feature_normals, r.points,
                                                                withdrawn, options.guard)));
@@ -388,8 +389,9 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
         std::vector<std::uint8_t> changed;
         if (round > 0) {
             changed = changed_faces(checked.accepted, guarded.accepted);
-            // A harmful face whose corners went back kept its slots, not its pieces.
+            // Faces whose corners went back kept their slots, not their pieces.
             for (Index f : harmful) changed[f] = 1;
+            for (Index f : reshaped) changed[f] = 1;
         }
         checked = std::move(guarded);
         clock.run(Stage::Split,
@@ -408,7 +410,8 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
         }
         [[maybe_unused]] const std::size_t before = r.undone_points + r.moves_given_up;
         if (reference) {
-            give_up_moves_of_pointless(input, *reference, checked.accepted, harm.harmful_faces, r);
+            reshaped = give_up_moves_of_pointless(input, *reference, checked.accepted,
+                                                  harm.harmful_faces, r);
         }
         withdrawn_before = withdrawn;
         withdraw_points_of(harm.harmful_faces, checked.accepted, withdrawn, r.undone_points);

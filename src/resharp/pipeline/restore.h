@@ -157,9 +157,9 @@ struct HarmReference {
 /// Takes the surface to split, its bands and the feature normals (#V) to place points with, and
 /// optionally the surface to check the split against (null: `input` itself). With a
 /// reference, harm on faces that hold no point is the moves': their moves are given up
-/// (`give_up_moves`) and the points of the faces within three rings of the vertices put back
-/// withdrawn (placed and guarded from the moved places: the fits of the feature normals and
-/// the guard's normals reach that far), and the rounds go on.
+/// (`give_up_moves`), and the rounds go on, the faces within three rings of the vertices put
+/// back guarded and checked again (guard_points_again()'s `reshaped`). The points stay as
+/// placed on the moved places: each is judged anew where it lies.
 /// \throws Cancelled when options.stop fires between two rounds; InvalidInput for options out
 ///         of range.
 BandRestoration restore_bands(const InputSurface& input, const BandClassification& bands,

@@ -556,7 +556,8 @@ struct RegionFlags {
 /// `flags.in_region` (and the border's in `flags.is_border`): the faces that had points at the
 /// last run's start (candidates less `before`) reached, across edges between such faces, from
 /// one that lost a point since (one of `now` but not of `before`; every such face is one of
-/// `holders` or lies across an edge of one). The search stops at the faces the last run left
+/// `holders` or lies across an edge of one), or one of `reshaped` that had points. The search
+/// stops at the faces the last run left
 /// alone (never repaired, slots as they started), which become the border, unless
 /// `flags.expand_anyway` marks them. A repair of a border face, or a change to its slots, is
 /// the only way the faces beyond can be drawn in (they push only their neighbours, and pushing
@@ -566,7 +567,8 @@ std::vector<Index> faces_to_guard_again(const Connectivity& c, const SharpPoints
                                         const GuardedPoints& previous,
                                         std::span<const std::uint8_t> before,
                                         std::span<const std::uint8_t> now,
-                                        std::span<const Index> holders, RegionFlags& flags) {
+                                        std::span<const Index> holders,
+                                        std::span<const Index> reshaped, RegionFlags& flags) {
     const PointSlots& slots = candidates.slots;
     auto had_points = [&](Index f) { return had_points_before(candidates, before, f); };
     auto lost_a_point = [&](Index f) {
@@ -592,6 +594,11 @@ std::vector<Index> faces_to_guard_again(const Connectivity& c, const SharpPoints
         for (Index k = 0; k < 3; ++k) {
             if (c.twin[3 * f + k] != kNoIndex) seed(face_of(c.twin[3 * f + k]));
         }
+    }
+    for (Index f : reshaped) {
+        if (flags.in_region[f] || !had_points(f)) continue;
+        flags.in_region[f] = 1;
+        expand.push_back(f);
     }
     std::vector<Index> region = expand;
     for (std::size_t i = 0; i < expand.size(); ++i) {
@@ -718,13 +725,16 @@ GuardedPoints guard_points_again(const InputSurface& input, const FeatureNormals
                                  const SharpPoints& candidates, const GuardedPoints& previous,
                                  std::span<const std::uint8_t> withdrawn_before,
                                  std::span<const std::uint8_t> withdrawn,
-                                 std::span<const Index> holders, const GuardOptions& options) {
+                                 std::span<const Index> holders, std::span<const Index> reshaped,
+                                 const GuardOptions& options) {
     validate(options, candidates, withdrawn_before);
     validate(options, candidates, withdrawn);
-    for (Index f : holders) {
-        if (f >= input.mesh.face_count()) {
-            throw InvalidInput("guard: holder face " + std::to_string(f) + " of " +
-                               std::to_string(input.mesh.face_count()));
+    for (auto [faces, what] : {std::pair{holders, "holder"}, std::pair{reshaped, "reshaped"}}) {
+        for (Index f : faces) {
+            if (f >= input.mesh.face_count()) {
+                throw InvalidInput(std::string("guard: ") + what + " face " + std::to_string(f) +
+                                   " of " + std::to_string(input.mesh.face_count()));
+            }
         }
     }
     if (withdrawn.empty()) return guard_points(input, feature_normals, candidates, {}, options);
@@ -767,7 +777,7 @@ GuardedPoints guard_points_again(const InputSurface& input, const FeatureNormals
         }
         const std::vector<Index> region =
             faces_to_guard_again(input.connectivity, candidates, previous, withdrawn_before,
-                                 withdrawn, holders, region_flags);
+                                 withdrawn, holders, reshaped, region_flags);
         GuardedPoints out = guard_region(region);
         std::vector<Index> disturbed;  // border faces the run did not leave alone
         for (const GuardRepair& r : out.repairs) {

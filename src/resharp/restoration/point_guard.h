@@ -66,13 +66,16 @@ GuardedPoints guard_points(const InputSurface& input, const FeatureNormals& feat
 /// the face and of the faces across its edges and nothing else, so the faces beyond a border
 /// of faces the last run left alone (never repaired, slots as they started) keep their slots
 /// and repairs as long as this run leaves that border alone too; where it does not, the region
-/// grows past it and is guarded again.
+/// grows past it and is guarded again. `reshaped`: faces whose work reads a part of `input`
+/// that changed since `previous` (near-surface restoration puts moved vertices back: the faces
+/// within three rings of them), guarded again as the holders' faces are.
 /// \throws InvalidInput as guard_points() does, if `withdrawn_before` is neither empty nor one
-///         flag per candidate point, or if a holder is not a face.
+///         flag per candidate point, or if a holder or a reshaped face is not a face.
 GuardedPoints guard_points_again(const InputSurface& input, const FeatureNormals& feature_normals,
                                  const SharpPoints& candidates, const GuardedPoints& previous,
                                  std::span<const std::uint8_t> withdrawn_before,
                                  std::span<const std::uint8_t> withdrawn,
-                                 std::span<const Index> holders, const GuardOptions& options = {});
+                                 std::span<const Index> holders, std::span<const Index> reshaped,
+                                 const GuardOptions& options = {});
 
 }  // namespace resharp
