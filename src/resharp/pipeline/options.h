@@ -75,8 +75,9 @@ struct RestoreOptions {
     GuardOptions guard;                   ///< which points the split may insert
     HarmCheckOptions harm;                ///< the do-no-harm check after the split
     /// Rounds of guard, split and harm check at most. Each round after the first undoes at
-    /// least one point, so the loop also ends when no point is left; past this bound, restore()
-    /// gives the input back unchanged.
+    /// least one point or, near-surface, gives up at least one move, so the loop also ends when
+    /// none is left; past this bound, restore() gives the input back unchanged (near-surface:
+    /// restores it as an exact mesh, within as many rounds again).
     int max_harm_rounds = 8;
     /// Worker threads; 0 means all cores. The output does not depend on it.
     int threads = 0;
