@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
 #include <optional>
 #include <string>
 
@@ -361,7 +360,8 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
     std::vector<Index> reshaped;                 // the faces near the moves the last check gave up
     GuardedPoints checked;                       // the last guard's result, its split checked
     // Bound: max_harm_rounds; and every round that does not end the loop withdraws at least one
-    // point (harmful faces are split faces, which hold points).
+    // point or gives up at least one move (harmful faces are split faces, which hold points, or,
+    // with a reference, faces with a moved corner).
     for (int round = 0; round < options.max_harm_rounds; ++round) {
         // The last round's split goes before this round's guard allocates: the guard reads the
         // last round's slots (`checked`), never its split, so one split at most is alive while

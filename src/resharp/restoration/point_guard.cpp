@@ -557,11 +557,11 @@ struct RegionFlags {
 /// last run's start (candidates less `before`) reached, across edges between such faces, from
 /// one that lost a point since (one of `now` but not of `before`; every such face is one of
 /// `holders` or lies across an edge of one), or one of `reshaped` that had points. The search
-/// stops at the faces the last run left
-/// alone (never repaired, slots as they started), which become the border, unless
-/// `flags.expand_anyway` marks them. A repair of a border face, or a change to its slots, is
-/// the only way the faces beyond can be drawn in (they push only their neighbours, and pushing
-/// a face left alone does nothing), so the region suffices if the run leaves its border alone.
+/// stops at the faces the last run left alone (never repaired, slots as they started), which
+/// become the border, unless `flags.expand_anyway` marks them. A repair of a border face, or a
+/// change to its slots, is the only way the faces beyond can be drawn in (they push only their
+/// neighbours, and pushing a face left alone does nothing), so the region suffices if the run
+/// leaves its border alone.
 /// Bound: each face joins the list once, and is looked at from its three edges.
 std::vector<Index> faces_to_guard_again(const Connectivity& c, const SharpPoints& candidates,
                                         const GuardedPoints& previous,
