@@ -41,6 +41,27 @@ TEST(Connectivity, RingsListEachIncidentFaceOnceInOrder) {
     EXPECT_EQ(total, 36u);
 }
 
+// A strip of six quads along x, each cut in two: faces 2k and 2k + 1 between columns k and
+// k + 1, bottom vertex of column k 2k, top 2k + 1. Each ring from the corner vertex 0 reaches
+// two faces further along.
+TEST(Connectivity, FacesWithinRingsGrowARingAtATime) {
+    Mesh mesh;
+    for (int k = 0; k <= 6; ++k) {
+        mesh.positions.emplace_back(k, 0.0, 0.0);
+        mesh.positions.emplace_back(k, 1.0, 0.0);
+    }
+    for (Index k = 0; k < 6; ++k) {
+        mesh.triangles.push_back({2 * k, 2 * k + 2, 2 * k + 1});
+        mesh.triangles.push_back({2 * k + 1, 2 * k + 2, 2 * k + 3});
+    }
+    const Connectivity c = build_connectivity(mesh);
+    EXPECT_TRUE(faces_within_rings(mesh, c, {0}, 0).empty());
+    EXPECT_EQ(faces_within_rings(mesh, c, {0}, 1), (std::vector<Index>{0}));
+    EXPECT_EQ(faces_within_rings(mesh, c, {0}, 2), (std::vector<Index>{0, 1, 2}));
+    EXPECT_EQ(faces_within_rings(mesh, c, {0}, 3), (std::vector<Index>{0, 1, 2, 3, 4}));
+    EXPECT_EQ(faces_within_rings(mesh, c, {12, 0}, 1), (std::vector<Index>{0, 10, 11}));
+}
+
 TEST(Connectivity, ClassifiesBoundaryNonManifoldAndInconsistentEdges) {
     Mesh mesh;
     mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, -1, 0}, {1, 1, 1}};

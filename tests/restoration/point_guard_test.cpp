@@ -377,34 +377,21 @@ TEST(Guard, AGuardAgainAfterVerticesMovedEqualsAFullGuard) {
     const Connectivity& connectivity = *d.connectivity;
     const SharpPoints& points = plate.points;
     const GuardedPoints first = guard_points(plate.surface(), d.feature_normals, points, {});
-    // Every fifth corner of the faces holding candidates, moved by a third of a pitch.
+    // Every fifth corner of the faces holding candidates, moved by about a third of a pitch.
     Mesh mesh = plate.shape.mesh;
     std::vector<Index> shifted;
     std::vector<std::uint8_t> seen(mesh.vertex_count(), 0);
+    std::size_t corners = 0;
     for (Index f = 0; f < mesh.face_count(); ++f) {
         if (!points.slots.has_points(f)) continue;
         for (Index v : mesh.triangles[f]) {
-            if (!seen[v]++ && shifted.size() % 5 == 0) {
-                mesh.positions[v] += Vec3(0.2, -0.1, 0.25) * plate.shape.pitch;
-            }
-            if (seen[v] == 1) shifted.push_back(v);
+            if (seen[v]++ || corners++ % 5 != 0) continue;
+            mesh.positions[v] += Vec3(0.2, -0.1, 0.25) * plate.shape.pitch;
+            shifted.push_back(v);
         }
     }
     ASSERT_GT(shifted.size(), 20u);
-    std::vector<Index> reshaped;
-    std::vector<std::uint8_t> reached(mesh.face_count(), 0);
-    std::vector<Index> ring = shifted;
-    for (int step = 0; step < 3; ++step) {
-        std::vector<Index> next;
-        for (Index v : ring) {
-            for (Index f : connectivity.faces_around(v)) {
-                if (reached[f]++) continue;
-                reshaped.push_back(f);
-                next.insert(next.end(), mesh.triangles[f].begin(), mesh.triangles[f].end());
-            }
-        }
-        ring = std::move(next);
-    }
+    const std::vector<Index> reshaped = faces_within_rings(mesh, connectivity, shifted, 3);
     const SurfaceNormals normals = surface_normals(mesh, connectivity);
     const InputSurface surface{mesh, connectivity, normals};
     const std::vector<std::uint8_t> none(points.points.size(), 0);

@@ -165,4 +165,29 @@ Connectivity build_connectivity(const Mesh& mesh) {
     return c;
 }
 
+std::vector<Index> faces_within_rings(const Mesh& mesh, const Connectivity& connectivity,
+                                      std::vector<Index> vertices, int rings) {
+    std::vector<std::uint8_t> reached_vertex(mesh.vertex_count(), 0);
+    std::vector<std::uint8_t> reached_face(mesh.face_count(), 0);
+    std::vector<Index> faces;
+    for (Index v : vertices) reached_vertex[v] = 1;
+    for (int ring = 0; ring < rings; ++ring) {
+        std::vector<Index> next;
+        for (Index v : vertices) {
+            for (Index f : connectivity.faces_around(v)) {
+                if (reached_face[f]) continue;
+                reached_face[f] = 1;
+                faces.push_back(f);
+                for (Index w : mesh.triangles[f]) {
+                    if (!reached_vertex[w]) next.push_back(w);
+                    reached_vertex[w] = 1;
+                }
+            }
+        }
+        vertices = std::move(next);
+    }
+    std::sort(faces.begin(), faces.end());
+    return faces;
+}
+
 }  // namespace resharp

@@ -85,4 +85,9 @@ void for_each_halfedge_without_twin(const Connectivity& connectivity, Visit&& vi
 /// edge_kind, never thrown. \throws InvalidInput for meshes of 2^31 / 3 triangles or more.
 Connectivity build_connectivity(const Mesh& mesh);
 
+/// The faces within `rings` rings of `vertices`, ascending: those around them, then those
+/// around the corners of those, and so on. Bound: rings times the faces reached.
+std::vector<Index> faces_within_rings(const Mesh& mesh, const Connectivity& connectivity,
+                                      std::vector<Index> vertices, int rings);
+
 }  // namespace resharp

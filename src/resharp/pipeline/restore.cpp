@@ -117,33 +117,6 @@ void withdraw_points_of(const std::vector<Index>& faces, const PointSlots& slots
     }
 }
 
-/// The faces within `rings` rings of `vertices`, ascending: those around them, then those
-/// around the corners of those, and so on. Bound: rings times the faces reached.
-std::vector<Index> faces_within_rings(const InputSurface& surface, std::vector<Index> vertices,
-                                      int rings) {
-    std::vector<std::uint8_t> reached_vertex(surface.mesh.vertex_count(), 0);
-    std::vector<std::uint8_t> reached_face(surface.mesh.face_count(), 0);
-    std::vector<Index> faces;
-    for (Index v : vertices) reached_vertex[v] = 1;
-    for (int ring = 0; ring < rings; ++ring) {
-        std::vector<Index> next;
-        for (Index v : vertices) {
-            for (Index f : surface.connectivity.faces_around(v)) {
-                if (reached_face[f]) continue;
-                reached_face[f] = 1;
-                faces.push_back(f);
-                for (Index w : surface.mesh.triangles[f]) {
-                    if (!reached_vertex[w]) next.push_back(w);
-                    reached_vertex[w] = 1;
-                }
-            }
-        }
-        vertices = std::move(next);
-    }
-    std::sort(faces.begin(), faces.end());
-    return faces;
-}
-
 /// With a reference: the harmful faces that hold no point did harm by their moves (every
 /// face the check judges holds points or has a moved corner). Gives those moves up through the
 /// reference (see restore_bands()); gives the faces within three rings of the vertices put
@@ -164,7 +137,7 @@ std::vector<Index> give_up_moves_of_pointless(const InputSurface& input,
     // A face's guard reads its corners' normals and its neighbours' slots; the normals made
     // again reach the corners of the faces around the vertices put back.
     constexpr int kReach = 3;
-    return faces_within_rings(input, put_back, kReach);
+    return faces_within_rings(input.mesh, input.connectivity, put_back, kReach);
 }
 
 /// Per face (#F): 1 where the slots of `after` differ from those of `before` (so its pieces do).
@@ -389,8 +362,8 @@ BandRestoration restore_bands(const InputSurface& input, const BandClassificatio
         std::vector<std::uint8_t> changed;
         if (round > 0) {
             changed = changed_faces(checked.accepted, guarded.accepted);
-            // Faces whose corners went back kept their slots, not their pieces.
-            for (Index f : harmful) changed[f] = 1;
+            // Faces whose corners went back (every harmful face without points is one) kept
+            // their slots, not their pieces.
             for (Index f : reshaped) changed[f] = 1;
         }
         checked = std::move(guarded);
