@@ -892,6 +892,11 @@ private:
     struct Cell {
         Vec3 low, high;
         Vec3 clamp(const Vec3& y) const { return y.cwiseMax(low).cwiseMin(high); }
+        /// The box with the cells around it: `pitch` wider on every side.
+        Cell with_neighbours(double pitch) const {
+            const Vec3 one = Vec3::Constant(pitch);
+            return {low - one, high + one};
+        }
         /// Whether the plane passes through the box (touching it counts).
         bool crossed_by(const Plane& plane) const {
             const Vec3 half = 0.5 * (high - low);
@@ -945,8 +950,7 @@ private:
             return cell.crossed_by(fit.plane);
         });
         if (crossed) return cell;
-        const Vec3 one = Vec3::Constant(rule_.grid.pitch);
-        return {cell.low - one, cell.high + one};
+        return cell.with_neighbours(rule_.grid.pitch);
     }
 
     /// The limit of Dykstra's alternating projections from x onto `cell` and onto an affine set
@@ -1019,18 +1023,43 @@ private:
         return fit->point;
     }
 
-    /// v's place on its own patch's plane (sides[0]), if within reach of its input place and
-    /// bounding the solid next to every other side. Only its own: the feature normals the edge
-    /// points are then placed with are those of v's own patch (eq. 5.1), so a band vertex moved
-    /// onto another side's plane, though nearer, would meet them off its plane (on the CAD
-    /// corpus: Edge F-score 0.530 -> 0.680 on hex_prism aligned, docs/results.md).
+    /// Near: where v's own side is its flat face's plane (flat_faces()) and that plane misses v's
+    /// input cell, the point of it nearest v within the cells around (as junction_reach()). A
+    /// cell-mean vertex in a cell its face does not cross was put there by a distance the mesher
+    /// got wrong by more than a cell: OpenVDB's beside a concave edge (on stepped_block turned at
+    /// 100 cells, a band vertex 0.74 of a pitch in front of its face, and the points placed from
+    /// the plane through it 0.9 of a pitch off the edge). None elsewhere, and where the point
+    /// found is off the plane.
+    std::optional<Vec3> point_on_face_beyond_cell(Index v, const Side& own) const {
+        if (rule_.placement != VertexPlacement::Near || !is_flat_face(own.patch))
+            return std::nullopt;
+        const Plane& face = flat_face_[own.patch]->plane;
+        if (face.normal != own.fit.plane.normal || face.offset != own.fit.plane.offset)
+            return std::nullopt;
+        const Cell cell = cell_of(input_[v]);
+        if (cell.crossed_by(face)) return std::nullopt;
+        const Cell reach = cell.with_neighbours(rule_.grid.pitch);
+        const Vec3 y = reach.clamp(nearest_to_cell(
+            current_.mesh.positions[v], [&](const Vec3& p) { return face.projection(p); }, reach));
+        if (std::abs(face.signed_distance(y)) > on_plane_tolerance()) return std::nullopt;
+        return y;
+    }
+
+    /// v's place on its own patch's plane (sides[0]), if within reach of its input place (or
+    /// beyond it, point_on_face_beyond_cell()) and bounding the solid next to every other side.
+    /// Only its own: the feature normals the edge points are then placed with are those of v's own
+    /// patch (eq. 5.1), so a band vertex moved onto another side's plane, though nearer, would meet
+    /// them off its plane (on the CAD corpus: Edge F-score 0.530 -> 0.680 on hex_prism aligned,
+    /// docs/results.md).
     std::optional<Vec3> point_on_own_side(Index v, std::span<const Side> sides,
                                           Scratch& scratch) const {
         const double tolerance = on_plane_tolerance();
         const Side& own = sides[0];
         std::optional<Vec3> y = point_on_curved(v, own, scratch);
         if (!y) y = point_on(v, own);
-        if (!y || !within_reach(input_[v], *y)) return std::nullopt;
+        if (y && !within_reach(input_[v], *y)) y.reset();
+        if (!y) y = point_on_face_beyond_cell(v, own);
+        if (!y) return std::nullopt;
         const bool valid = std::all_of(sides.begin() + 1, sides.end(), [&](const Side& b) {
             return bounds_solid(*y, own, b, tolerance);
         });

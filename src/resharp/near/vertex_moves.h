@@ -87,11 +87,13 @@ struct MoveRule {
 /// every vertex (#V, kNoIndex for none; Patches only) and the bands found (Patches only).
 /// Near: a plane is fitted to a patch's vertices off the bands around the vertex; on a flat
 /// face (most of the patch's vertices off the bands on one plane) it is the face's plane
-/// wherever the fit scatters and half its points lie on that plane (the rest the mesher put off
-/// the face beside an edge), and an exact fit to points that barely spread across it (a row and
-/// a vertex) is none. Band vertices move by the shortest way onto the side of their own patch,
-/// where it bounds the solid next to the other sides and within their input cell (the others lie on
-/// their surface already, up to its curvature); a vertex of no patch whose ring meets two or
+/// wherever the fit scatters and half its points lie on that plane, or all lie within half a
+/// pitch of it (the rest the mesher put off the face beside an edge; for a band vertex's own
+/// side, in front of it only), and an exact fit to points that barely spread across it (a row
+/// and a vertex) is none. Band vertices move by the shortest way onto the side of their own
+/// patch, where it bounds the solid next to the other sides and within their input cell (within
+/// the cells around where that side is a flat face's plane that misses the cell; the others lie
+/// on their surface already, up to its curvature); a vertex of no patch whose ring meets two or
 /// three patches (those of its ring's vertices, or where they have fewer than two, of the
 /// vertices within the fit rings: the two whose planes lie nearest it) moves onto where their
 /// planes meet (the sharp edge or corner; not where its normal runs along an edge's line, on a
