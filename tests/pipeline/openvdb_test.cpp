@@ -100,6 +100,18 @@ TEST(OpenVdbMesher, TheLBlocksConcaveEdgeComesBackSharpOnTheEdge) {
     test::expect_no_harm(input, r, options);
 }
 
+/// A turn by `radians` about an axis along no grid plane.
+Eigen::Matrix3d turn_of(double radians) {
+    return Eigen::AngleAxisd(radians, Vec3(2, -1, 3).normalized()).toRotationMatrix();
+}
+
+/// OpenVDB's mesh of `fine` turned by `turn`, at the pitch kPitch.
+Mesh turned_dual_mesh(const Mesh& fine, const Eigen::Matrix3d& turn) {
+    Mesh turned = fine;
+    for (Vec3& x : turned.positions) x = turn * x;
+    return extras::openvdb_dual_mesh(turned, kPitch);
+}
+
 // Turned off the grid axes, OpenVDB's error beside the concave edge winds across the cells and
 // reaches two or three of them into each face; a plane fitted around a vertex there leaned
 // towards the corner by degrees, and the faces met off the edge (none of the edge had a crease
@@ -118,11 +130,8 @@ TEST(OpenVdbMesher, TheTurnedLBlocksConcaveEdgeComesBackNearerTheEdge) {
     double restored = 0.0;
     for (const double radians : {0.31, 0.45, 0.6}) {
         SCOPED_TRACE(radians);
-        const Eigen::Matrix3d turn =
-            Eigen::AngleAxisd(radians, Vec3(2, -1, 3).normalized()).toRotationMatrix();
-        Mesh turned = fine.mesh;
-        for (Vec3& x : turned.positions) x = turn * x;
-        const Mesh input = extras::openvdb_dual_mesh(turned, kPitch);
+        const Eigen::Matrix3d turn = turn_of(radians);
+        const Mesh input = turned_dual_mesh(fine.mesh, turn);
         const RestoreResult r = restore(input, options);
         const Vec3 a = turn * (concave->a + kPitch * along);
         const Vec3 b = turn * (concave->b - kPitch * along);
@@ -157,11 +166,8 @@ TEST(OpenVdbMesher, BandVerticesOfAFaceThatMissesTheirCellGoOntoItWithinTheCells
     std::size_t beyond = 0;
     for (const double radians : {0.45, 0.6, 0.8}) {
         SCOPED_TRACE(radians);
-        const Eigen::Matrix3d turn =
-            Eigen::AngleAxisd(radians, Vec3(2, -1, 3).normalized()).toRotationMatrix();
-        Mesh turned = fine.mesh;
-        for (Vec3& x : turned.positions) x = turn * x;
-        const Mesh input = extras::openvdb_dual_mesh(turned, kPitch);
+        const Eigen::Matrix3d turn = turn_of(radians);
+        const Mesh input = turned_dual_mesh(fine.mesh, turn);
         const std::optional<Grid> grid = estimate_vertex_placement(input).grid;
         ASSERT_TRUE(grid.has_value());
         const RestoreResult r = restore(input, options);
