@@ -102,7 +102,7 @@ enum class OffFace : std::uint8_t {
     /// face leaves a flat one at a shallow angle, its vertices lie behind the plane (the
     /// impeller by OpenVDB, its stock's sides where the channels' walls leave them: all 198 such
     /// fits), and the face's plane there led band vertices past the edge: 149 -> 275 split
-    /// pieces flipped against the exact surface, none in front only.
+    /// pieces flipped against the exact surface (149 with in front only).
     InFront,
 };
 
