@@ -881,11 +881,7 @@ private:
     std::optional<Vec3> nearest_in_cell(const Vec3& x, const Plane& plane, const Vec3& from) const {
         const Vec3 y = plane.projection(x);
         if (within_reach(from, y)) return y;
-        const Cell cell = cell_of(from);
-        const Vec3 in_cell = cell.clamp(nearest_to_cell(
-            x, [&](const Vec3& p) { return plane.projection(p); }, cell));
-        if (std::abs(plane.signed_distance(in_cell)) > on_plane_tolerance()) return std::nullopt;
-        return in_cell;
+        return nearest_within(x, plane, cell_of(from));
     }
 
     /// A closed grid cell.
@@ -904,6 +900,15 @@ private:
                    plane.normal.cwiseAbs().dot(half);
         }
     };
+
+    /// The point of `plane` nearest x within `box` (nearest_to_cell(), brought into the box);
+    /// none if that is farther than a thousandth of a pitch off the plane (the plane misses it).
+    std::optional<Vec3> nearest_within(const Vec3& x, const Plane& plane, const Cell& box) const {
+        const Vec3 y = box.clamp(nearest_to_cell(
+            x, [&](const Vec3& p) { return plane.projection(p); }, box));
+        if (std::abs(plane.signed_distance(y)) > on_plane_tolerance()) return std::nullopt;
+        return y;
+    }
 
     Cell cell_of(const Vec3& from) const {
         const double h = rule_.grid.pitch;
@@ -1038,11 +1043,8 @@ private:
             return std::nullopt;
         const Cell cell = cell_of(input_[v]);
         if (cell.crossed_by(face)) return std::nullopt;
-        const Cell reach = cell.with_neighbours(rule_.grid.pitch);
-        const Vec3 y = reach.clamp(nearest_to_cell(
-            current_.mesh.positions[v], [&](const Vec3& p) { return face.projection(p); }, reach));
-        if (std::abs(face.signed_distance(y)) > on_plane_tolerance()) return std::nullopt;
-        return y;
+        return nearest_within(current_.mesh.positions[v], face,
+                              cell.with_neighbours(rule_.grid.pitch));
     }
 
     /// v's place on its own patch's plane (sides[0]), if within reach of its input place (or
