@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -89,6 +90,11 @@ constexpr double kMaxNormalAlongJunction = 0.5;
 /// explains its vertices' scatter about the plane, a flat face that took in a few vertices off
 /// it (a hole's rim) does not, and its surface, bent towards them, meets the others off the edge.
 constexpr double kBendShare = 3.0;
+/// Near: how far from a flat side's plane (in pitches) a curved side's vertices may be ones a
+/// dual mesher displaced along their concave edge (curved_side()): OpenVDB's two rows beside
+/// the edge lie within 1.4 pitches of the other face (one cell along, one out), the next on
+/// their face (spool at 100 cells, the hub beside a flange: 1.2 and 1.9 pitches).
+constexpr double kDisplacedRows = 1.5;
 
 /// Near: where a flat face's vertices around a vertex may lie off its plane for it to be taken
 /// as theirs (fit_side()).
@@ -125,6 +131,7 @@ struct Target {
 struct Scratch {
     std::vector<Index> reached;  ///< the vertices within the rings, nearest rings first
     std::vector<Vec3> points;
+    std::vector<Vec3> near_rows;  ///< a curved side's points near its flat sides (curved_side())
     /// Per vertex (#V): the number of the gathering that last reached it (0: none). A new
     /// gathering takes the next number, so no marks are cleared.
     std::vector<std::uint32_t> reached_in;
@@ -228,6 +235,26 @@ void gather_rings(const Neighbours& neighbours, Index v, int rings, std::size_t 
 
 class MovePlanner {
 public:
+    /// The planes of a vertex's sides, fits[i] for its patches[i] (none where a side has none).
+    using Fits = std::array<std::optional<PlaneFit>, kMaxSides>;
+
+    /// A closed grid cell.
+    struct Cell {
+        Vec3 low, high;
+        Vec3 clamp(const Vec3& y) const { return y.cwiseMax(low).cwiseMin(high); }
+        /// The box with the cells around it: `pitch` wider on every side.
+        Cell with_neighbours(double pitch) const {
+            const Vec3 one = Vec3::Constant(pitch);
+            return {low - one, high + one};
+        }
+        /// Whether the plane passes through the box (touching it counts).
+        bool crossed_by(const Plane& plane) const {
+            const Vec3 half = 0.5 * (high - low);
+            return std::abs(plane.signed_distance(0.5 * (low + high))) <=
+                   plane.normal.cwiseAbs().dot(half);
+        }
+    };
+
     MovePlanner(const InputSurface& current, const std::vector<Vec3>& input,
                 const std::vector<Index>& vertex_patch, const BandClassification& bands,
                 const MoveRule& rule, const VertexMoveOptions& options)
@@ -312,13 +339,13 @@ private:
             fit_missing_farther(v, around, OffFace::EitherSide, fits, scratch);
         std::array<PlaneFit, 3> planes;
         for (std::size_t i = 0; i < count; ++i) {
-            if (!fits[i]) return point_on_curved_junction(v, around, scratch);
+            if (!fits[i]) return point_on_curved_junction(v, around, fits, scratch);
             planes[i] = *fits[i];
         }
         const Vec3& x = current_.mesh.positions[v];
-        if (beyond_ring && count == 3) count = nearest_two_first(x, planes, patches);
+        if (beyond_ring && count == 3) count = nearest_two_first(x, planes, patches, fits);
         if (!flat_enough(std::span(planes.data(), count)))
-            return point_on_curved_junction(v, std::span(patches.data(), count), scratch);
+            return point_on_curved_junction(v, std::span(patches.data(), count), fits, scratch);
         const std::optional<Junction> junction = sharp_junction(std::span(planes.data(), count));
         if (!junction) return std::nullopt;
         const Cell reach = junction_reach(input_[v], std::span(planes.data(), count));
@@ -465,42 +492,136 @@ private:
         SurfaceValue evaluate(const Vec3& p) const {
             return bent ? bent->evaluate(p) : SurfaceValue{plane.signed_distance(p), plane.normal};
         }
+        /// Whether the surface passes through the cell: a plane as Cell::crossed_by(), a
+        /// second-order surface where it takes both signs at the cell's corners.
+        bool crosses(const Cell& cell) const {
+            if (!bent) return cell.crossed_by(plane);
+            bool below = false, above = false;
+            for (int corner = 0; corner < 8; ++corner) {
+                const Vec3 c((corner & 1) ? cell.high.x() : cell.low.x(),
+                             (corner & 2) ? cell.high.y() : cell.low.y(),
+                             (corner & 4) ? cell.high.z() : cell.low.z());
+                (evaluate(c).value < 0.0 ? below : above) = true;
+            }
+            return below && above;
+        }
     };
+
+    /// Side `patch`'s plane where it is flat near the vertex gathered around: its flat face's
+    /// plane where fit_side() took that (`fit`), else the plane of its vertices within the fit
+    /// rings (all those gathered where it has too few there) where they scatter about it by at
+    /// most the junction scatter; none where it is curved.
+    std::optional<Plane> flat_side(Index patch, const std::optional<PlaneFit>& fit,
+                                   Scratch& scratch) const {
+        if (fit && is_face_plane(patch, fit->plane)) return fit->plane;
+        Vec3 facing = collect_side_points(patch, scratch, scratch.fit_reached);
+        if (scratch.points.size() < static_cast<std::size_t>(options_.min_fit_points))
+            facing = collect_side_points(patch, scratch);
+        if (scratch.points.size() < static_cast<std::size_t>(options_.min_fit_points))
+            return std::nullopt;
+        const std::optional<PlaneFit> own = fit_plane(scratch.points, facing);
+        if (!own || own->rms_distance > options_.max_junction_scatter * rule_.grid.pitch)
+            return std::nullopt;
+        return own->plane;
+    }
+
+    /// The second-order surface over scratch.points (facing `facing`) near x: none unless it
+    /// fits them within kCurvedJunctionScatter and kBendShare times as closely as their plane.
+    std::optional<SideSurface> bent_surface(const Vec3& facing, const Vec3& x,
+                                            std::span<const Vec3> points) const {
+        if (points.size() < static_cast<std::size_t>(options_.min_fit_points)) return std::nullopt;
+        const std::optional<PlaneFit> plane = fit_plane(points, facing);
+        if (!plane) return std::nullopt;
+        SideSurface s{plane->plane, fit_height_quadric(points, plane->plane, x)};
+        if (!s.bent || s.bent->rms_distance > kCurvedJunctionScatter * rule_.grid.pitch ||
+            !(s.bent->rms_distance * kBendShare < plane->rms_distance))
+            return std::nullopt;
+        return s;
+    }
+
+    /// The curved side `patch` of v near x: bent_surface() of its vertices within the fit rings
+    /// (all those gathered where it has too few there). Next to flat sides (`flat`), also that
+    /// of its vertices gathered within the other side fit rings and farther than kDisplacedRows
+    /// from every flat plane, taken instead where the nearer ones do not lie on it (within
+    /// kCurvedJunctionScatter, rms): OpenVDB's vertices along a concave edge lie up to a quarter
+    /// of a pitch in front of their face over two cells (near/concave_bevels.h), and a quadric
+    /// bends to them (spool by OpenVDB, a flange's edge on the hub: the junction 0.4 mm off it
+    /// at pitch 0.4). Surface nets' lie on the face there, and their nearer fit stays.
+    std::optional<SideSurface> curved_side(Index v, Index patch, const Vec3& x,
+                                           std::span<const Plane* const> flat,
+                                           Scratch& scratch) const {
+        const double h = rule_.grid.pitch;
+        Vec3 facing = collect_side_points(patch, scratch, scratch.fit_reached);
+        if (scratch.points.size() < static_cast<std::size_t>(options_.min_fit_points))
+            facing = collect_side_points(patch, scratch);
+        const std::optional<SideSurface> nearby = bent_surface(facing, x, scratch.points);
+        const auto displaced = [&](const Vec3& q) {
+            return std::any_of(flat.begin(), flat.end(), [&](const Plane* p) {
+                return std::abs(p->signed_distance(q)) < kDisplacedRows * h;
+            });
+        };
+        std::vector<Vec3>& near_rows = scratch.near_rows;
+        near_rows.clear();
+        std::copy_if(scratch.points.begin(), scratch.points.end(), std::back_inserter(near_rows),
+                     displaced);
+        if (near_rows.empty()) return nearby;
+        gather_rings(neighbours_, v, options_.other_side_fit_rings, kMaxOtherSideGathered, scratch);
+        facing = collect_side_points(patch, scratch);
+        std::erase_if(scratch.points, displaced);
+        const std::optional<SideSurface> far = bent_surface(facing, x, scratch.points);
+        if (!far || (nearby && rms_off(*far, near_rows) <= kCurvedJunctionScatter * h))
+            return nearby;
+        return far;
+    }
+
+    /// The root mean square distance of the points from the surface, to first order.
+    static double rms_off(const SideSurface& surface, std::span<const Vec3> points) {
+        double sum = 0.0;
+        for (const Vec3& q : points) {
+            const SurfaceValue at = surface.evaluate(q);
+            sum += at.value * at.value / std::max(at.gradient.squaredNorm(), 1e-300);
+        }
+        return std::sqrt(sum / static_cast<double>(points.size()));
+    }
 
     /// Near, a vertex between two or three patches one of which is curved (its vertices scatter
     /// about any plane by their sag: a cylinder of 20 pitches' radius by 0.02 pitch over the fit
     /// rings, one of 6 by more than the trusted 0.1): where the surfaces fitted to each side's
     /// vertices off the bands meet, second-order where a plane leaves them (fit_height_quadric()
     /// over the plane, as point_on_curved() takes), nearest the vertex and clamped to its input
-    /// cell. None unless each surface fits its vertices within kCurvedJunctionScatter, one side
-    /// at most is curved, and the surfaces part there by more than the junction angle. One
-    /// curved side: where two meet, both fits' errors add, and no part measured gains from them
-    /// (with two allowed the Edge F-scores of docs/results.md's surface-nets and OpenVDB rows
-    /// agreed with these within 0.002). The sides' points are those within the fit rings, where
-    /// a side has enough of them (the surface's own higher-order terms grow with the reach), else
-    /// all those gathered.
+    /// cell, or where no surface crosses that cell to the cells around it too (as
+    /// junction_reach(): OpenVDB's bevel across a flange's edge on a hub puts its middle vertex
+    /// in the empty corner). None unless each surface fits its vertices within
+    /// kCurvedJunctionScatter, one side at most is curved, and the surfaces part there by more
+    /// than the junction angle. One curved side: where two meet, both fits' errors add, and no
+    /// part measured gains from them (with two allowed the Edge F-scores of docs/results.md's
+    /// surface-nets and OpenVDB rows agreed with these within 0.002). A flat side is its flat
+    /// face's plane where fit_side() took that, else the plane of its points within the fit rings
+    /// (flat_side()); the curved side's surface is curved_side()'s.
     std::optional<Vec3> point_on_curved_junction(Index v, std::span<const Index> patches,
-                                                 Scratch& scratch) const {
+                                                 const Fits& fits, Scratch& scratch) const {
         const double h = rule_.grid.pitch;
         const Vec3& x = current_.mesh.positions[v];
         std::array<SideSurface, 3> surfaces;
-        bool one_bent = false;
+        std::array<const Plane*, 3> flat_planes{};
+        std::size_t flat_count = 0;
+        std::size_t curved = patches.size();
         for (std::size_t i = 0; i < patches.size(); ++i) {
-            Vec3 facing = collect_side_points(patches[i], scratch, scratch.fit_reached);
-            if (scratch.points.size() < static_cast<std::size_t>(options_.min_fit_points))
-                facing = collect_side_points(patches[i], scratch);
-            if (scratch.points.size() < static_cast<std::size_t>(options_.min_fit_points))
+            const std::optional<Plane> plane = flat_side(patches[i], fits[i], scratch);
+            if (plane) {
+                surfaces[i].plane = *plane;
+                flat_planes[flat_count++] = &surfaces[i].plane;
+            } else if (curved == patches.size()) {
+                curved = i;
+            } else {
                 return std::nullopt;
-            const std::optional<PlaneFit> plane = fit_plane(scratch.points, facing);
-            if (!plane) return std::nullopt;
-            surfaces[i].plane = plane->plane;
-            if (plane->rms_distance <= options_.max_junction_scatter * h) continue;
-            if (one_bent) return std::nullopt;
-            one_bent = true;
-            surfaces[i].bent = fit_height_quadric(scratch.points, plane->plane, x);
-            if (!surfaces[i].bent || surfaces[i].bent->rms_distance > kCurvedJunctionScatter * h ||
-                !(surfaces[i].bent->rms_distance * kBendShare < plane->rms_distance))
-                return std::nullopt;
+            }
+        }
+        if (curved < patches.size()) {
+            const std::optional<SideSurface> bent = curved_side(
+                v, patches[curved], x, std::span(flat_planes.data(), flat_count), scratch);
+            if (!bent) return std::nullopt;
+            surfaces[curved] = *bent;
         }
         const JunctionSolverOptions solver{.pitch = h};
         const std::optional<Vec3> y =
@@ -511,7 +632,10 @@ private:
         for (std::size_t i = 0; i < patches.size(); ++i)
             normals[i] = surfaces[i].evaluate(*y).gradient.normalized();
         if (!part_sharply(std::span(normals.data(), patches.size()))) return std::nullopt;
-        return cell_of(input_[v]).clamp(*y);
+        const Cell cell = cell_of(input_[v]);
+        const bool crossed = std::any_of(surfaces.begin(), surfaces.begin() + patches.size(),
+                                         [&](const SideSurface& s) { return s.crosses(cell); });
+        return crossed ? cell.clamp(*y) : cell.with_neighbours(h).clamp(*y);
     }
 
     /// The sides of v's patches: its own first; for a band vertex the others around it too, and
@@ -545,8 +669,6 @@ private:
         if (in_band_[v] && count < 2) return 0;
         return count;
     }
-
-    using Fits = std::array<std::optional<PlaneFit>, kMaxSides>;
 
     /// The planes of `patches` around v (fits[i] for patches[i]): each fitted to its vertices
     /// within the fit rings of v, gathered when a patch first needs them, or a midpoint patch's
@@ -662,6 +784,13 @@ private:
                 return d >= -behind && d <= reach;
             });
         return within ? flat_face_[patch] : fit;
+    }
+
+    /// Near: whether `plane` is flat face `patch`'s plane (flat_faces()), as fit_side() gives it.
+    bool is_face_plane(Index patch, const Plane& plane) const {
+        if (!is_flat_face(patch)) return false;
+        const Plane& face = flat_face_[patch]->plane;
+        return face.normal == plane.normal && face.offset == plane.offset;
     }
 
     /// Near: whether `patch` is a flat face (flat_faces()).
@@ -884,23 +1013,6 @@ private:
         return nearest_within(x, plane, cell_of(from));
     }
 
-    /// A closed grid cell.
-    struct Cell {
-        Vec3 low, high;
-        Vec3 clamp(const Vec3& y) const { return y.cwiseMax(low).cwiseMin(high); }
-        /// The box with the cells around it: `pitch` wider on every side.
-        Cell with_neighbours(double pitch) const {
-            const Vec3 one = Vec3::Constant(pitch);
-            return {low - one, high + one};
-        }
-        /// Whether the plane passes through the box (touching it counts).
-        bool crossed_by(const Plane& plane) const {
-            const Vec3 half = 0.5 * (high - low);
-            return std::abs(plane.signed_distance(0.5 * (low + high))) <=
-                   plane.normal.cwiseAbs().dot(half);
-        }
-    };
-
     /// The point of `plane` nearest x within `box` (nearest_to_cell(), brought into the box);
     /// none if that is farther than a thousandth of a pitch off the plane (the plane misses it).
     std::optional<Vec3> nearest_within(const Vec3& x, const Plane& plane, const Cell& box) const {
@@ -923,7 +1035,7 @@ private:
     /// within the fit rings is where the bevel ends (the part's side), not a corner of it: the
     /// junction of all three took the bevel's last cells towards the corner, out of reach.
     static std::size_t nearest_two_first(const Vec3& x, std::array<PlaneFit, 3>& planes,
-                                         std::array<Index, kMaxSides>& patches) {
+                                         std::array<Index, kMaxSides>& patches, Fits& fits) {
         std::size_t farthest = 0;
         for (std::size_t i = 1; i < 3; ++i) {
             if (std::abs(planes[i].plane.signed_distance(x)) >
@@ -932,6 +1044,7 @@ private:
         }
         std::swap(planes[farthest], planes[2]);
         std::swap(patches[farthest], patches[2]);
+        std::swap(fits[farthest], fits[2]);
         return 2;
     }
 
@@ -1036,11 +1149,9 @@ private:
     /// the plane through it 0.9 of a pitch off the edge). None elsewhere, and where the point
     /// found is off the plane.
     std::optional<Vec3> point_on_face_beyond_cell(Index v, const Side& own) const {
-        if (rule_.placement != VertexPlacement::Near || !is_flat_face(own.patch))
+        if (rule_.placement != VertexPlacement::Near || !is_face_plane(own.patch, own.fit.plane))
             return std::nullopt;
         const Plane& face = flat_face_[own.patch]->plane;
-        if (face.normal != own.fit.plane.normal || face.offset != own.fit.plane.offset)
-            return std::nullopt;
         const Cell cell = cell_of(input_[v]);
         if (cell.crossed_by(face)) return std::nullopt;
         return nearest_within(current_.mesh.positions[v], face,
