@@ -242,6 +242,10 @@ public:
     struct Cell {
         Vec3 low, high;
         Vec3 clamp(const Vec3& y) const { return y.cwiseMax(low).cwiseMin(high); }
+        /// Whether y lies in the box (its boundary included).
+        bool holds(const Vec3& y) const {
+            return (y.array() >= low.array()).all() && (y.array() <= high.array()).all();
+        }
         /// The box with the cells around it: `pitch` wider on every side.
         Cell with_neighbours(double pitch) const {
             const Vec3 one = Vec3::Constant(pitch);
@@ -492,28 +496,34 @@ private:
         SurfaceValue evaluate(const Vec3& p) const {
             return bent ? bent->evaluate(p) : SurfaceValue{plane.signed_distance(p), plane.normal};
         }
-        /// Whether the surface passes through the cell: a plane as Cell::crossed_by(), a
-        /// second-order surface where it takes both signs at the cell's corners.
+        /// Whether the surface may pass through the cell: a plane as Cell::crossed_by(), a
+        /// second-order surface where its tangent plane at the foot of the cell's centre does
+        /// (to first order, the plane at its distance from the centre along its normal there).
         bool crosses(const Cell& cell) const {
             if (!bent) return cell.crossed_by(plane);
-            bool below = false, above = false;
-            for (int corner = 0; corner < 8; ++corner) {
-                const Vec3 c((corner & 1) ? cell.high.x() : cell.low.x(),
-                             (corner & 2) ? cell.high.y() : cell.low.y(),
-                             (corner & 4) ? cell.high.z() : cell.low.z());
-                (evaluate(c).value < 0.0 ? below : above) = true;
-            }
-            return below && above;
+            const Vec3 centre = 0.5 * (cell.low + cell.high);
+            const SurfaceValue at = evaluate(centre);
+            const double slope = at.gradient.norm();
+            if (!(slope > 0.0)) return true;
+            const Vec3 normal = at.gradient / slope;
+            return cell.crossed_by({normal, normal.dot(centre) - at.value / slope});
         }
     };
 
-    /// Side `patch`'s plane where it is flat near the vertex gathered around: its flat face's
-    /// plane where fit_side() took that (`fit`), else the plane of its vertices within the fit
-    /// rings (all those gathered where it has too few there) where they scatter about it by at
-    /// most the junction scatter; none where it is curved.
-    std::optional<Plane> flat_side(Index patch, const std::optional<PlaneFit>& fit,
+    /// Side `patch`'s plane where it is flat near x, the vertex gathered around: its flat face's
+    /// plane where fit_side() took that (`fit`) and x lies in front of it, else the plane of its
+    /// vertices within the fit rings (all those gathered where it has too few there) where they
+    /// scatter about it by at most the junction scatter; none where it is curved. In front of
+    /// both faces, x lies in the empty corner of a concave edge, where OpenVDB's error puts the
+    /// face's vertices around off it (near/concave_bevels.h). Behind one, at a convex edge, the
+    /// face's plane is taken only as its vertices around give it: on the pocketed block by
+    /// surface nets, the top's vertices beside the hole's rim (a cylinder of 3.8 pitches) lie off
+    /// the top, and its plane met the wall's surface off the rim (15 of the 158 vertices between
+    /// patches then off their edges).
+    std::optional<Plane> flat_side(Index patch, const std::optional<PlaneFit>& fit, const Vec3& x,
                                    Scratch& scratch) const {
-        if (fit && is_face_plane(patch, fit->plane)) return fit->plane;
+        if (fit && is_face_plane(patch, fit->plane) && fit->plane.signed_distance(x) >= 0.0)
+            return fit->plane;
         Vec3 facing = collect_side_points(patch, scratch, scratch.fit_reached);
         if (scratch.points.size() < static_cast<std::size_t>(options_.min_fit_points))
             facing = collect_side_points(patch, scratch);
@@ -589,11 +599,11 @@ private:
     /// rings, one of 6 by more than the trusted 0.1): where the surfaces fitted to each side's
     /// vertices off the bands meet, second-order where a plane leaves them (fit_height_quadric()
     /// over the plane, as point_on_curved() takes), nearest the vertex and clamped to its input
-    /// cell, or where no surface crosses that cell to the cells around it too (as
-    /// junction_reach(): OpenVDB's bevel across a flange's edge on a hub puts its middle vertex
-    /// in the empty corner). None unless each surface fits its vertices within
-    /// kCurvedJunctionScatter, one side at most is curved, and the surfaces part there by more
-    /// than the junction angle. One curved side: where two meet, both fits' errors add, and no
+    /// cell, or where no surface crosses that cell and the vertex lies in front of them all, to
+    /// the cells around it too (as junction_reach(): OpenVDB's bevel across a flange's edge on a
+    /// hub puts its middle vertex in the empty corner). None unless each surface fits its vertices
+    /// within kCurvedJunctionScatter, one side at most is curved, and the surfaces part there by
+    /// more than the junction angle. One curved side: where two meet, both fits' errors add, and no
     /// part measured gains from them (with two allowed the Edge F-scores of docs/results.md's
     /// surface-nets and OpenVDB rows agreed with these within 0.002). A flat side is its flat
     /// face's plane where fit_side() took that, else the plane of its points within the fit rings
@@ -607,7 +617,7 @@ private:
         std::size_t flat_count = 0;
         std::size_t curved = patches.size();
         for (std::size_t i = 0; i < patches.size(); ++i) {
-            const std::optional<Plane> plane = flat_side(patches[i], fits[i], scratch);
+            const std::optional<Plane> plane = flat_side(patches[i], fits[i], x, scratch);
             if (plane) {
                 surfaces[i].plane = *plane;
                 flat_planes[flat_count++] = &surfaces[i].plane;
@@ -633,9 +643,18 @@ private:
             normals[i] = surfaces[i].evaluate(*y).gradient.normalized();
         if (!part_sharply(std::span(normals.data(), patches.size()))) return std::nullopt;
         const Cell cell = cell_of(input_[v]);
-        const bool crossed = std::any_of(surfaces.begin(), surfaces.begin() + patches.size(),
-                                         [&](const SideSurface& s) { return s.crosses(cell); });
-        return crossed ? cell.clamp(*y) : cell.with_neighbours(h).clamp(*y);
+        // Beyond its cell only where no side's surface crosses the cell, the vertex lies in
+        // front of every side (in the empty corner of a concave edge, where OpenVDB's bevel puts
+        // it) and the junction lies within the cells around. Behind a side, the vertex may be
+        // one of a curved face the sides' surfaces miss: on the pocketed block by surface nets,
+        // a vertex of the hole's wall 1.1 pitches below the top would have gone to the rim's
+        // junction of a quadric 0.2 mm inside the wall, out of its cell.
+        const auto sides = std::span(surfaces.data(), patches.size());
+        const bool held = std::any_of(sides.begin(), sides.end(), [&](const SideSurface& s) {
+            return s.crosses(cell) || s.evaluate(x).value <= 0.0;
+        });
+        if (held || !cell.with_neighbours(h).holds(*y)) return cell.clamp(*y);
+        return y;
     }
 
     /// The sides of v's patches: its own first; for a band vertex the others around it too, and
