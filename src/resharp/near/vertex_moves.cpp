@@ -605,9 +605,8 @@ private:
     /// within kCurvedJunctionScatter, one side at most is curved, and the surfaces part there by
     /// more than the junction angle. One curved side: where two meet, both fits' errors add, and no
     /// part measured gains from them (with two allowed the Edge F-scores of docs/results.md's
-    /// surface-nets and OpenVDB rows agreed with these within 0.002). A flat side is its flat
-    /// face's plane where fit_side() took that, else the plane of its points within the fit rings
-    /// (flat_side()); the curved side's surface is curved_side()'s.
+    /// surface-nets and OpenVDB rows agreed with these within 0.002). A flat side's plane is
+    /// flat_side()'s, the curved side's surface curved_side()'s.
     std::optional<Vec3> point_on_curved_junction(Index v, std::span<const Index> patches,
                                                  const Fits& fits, Scratch& scratch) const {
         const double h = rule_.grid.pitch;
