@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <iterator>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -131,7 +130,8 @@ struct Target {
 struct Scratch {
     std::vector<Index> reached;  ///< the vertices within the rings, nearest rings first
     std::vector<Vec3> points;
-    std::vector<Vec3> near_rows;  ///< a curved side's points near its flat sides (curved_side())
+    /// A curved side's vertices nearby, then those of them near its flat sides (curved_side()).
+    std::vector<Vec3> near_rows;
     /// Per vertex (#V): the number of the gathering that last reached it (0: none). A new
     /// gathering takes the next number, so no marks are cleared.
     std::vector<std::uint32_t> reached_in;
@@ -510,37 +510,48 @@ private:
         }
     };
 
-    /// Side `patch`'s plane where it is flat near x, the vertex gathered around: its flat face's
-    /// plane where fit_side() took that (`fit`) and x lies in front of it, else the plane of its
-    /// vertices within the fit rings (all those gathered where it has too few there) where they
-    /// scatter about it by at most the junction scatter; none where it is curved. In front of
-    /// both faces, x lies in the empty corner of a concave edge, where OpenVDB's error puts the
-    /// face's vertices around off it (near/concave_bevels.h). Behind one, at a convex edge, the
-    /// face's plane is taken only as its vertices around give it: on the pocketed block by
-    /// surface nets, the top's vertices beside the hole's rim (a cylinder of 3.8 pitches) lie off
-    /// the top, and its plane met the wall's surface off the rim (15 of the 158 vertices between
-    /// patches then off their edges).
-    std::optional<Plane> flat_side(Index patch, const std::optional<PlaneFit>& fit, const Vec3& x,
-                                   Scratch& scratch) const {
+    /// Side `patch` near x, the vertex gathered around, as a curved junction takes it: `fit`,
+    /// flat, where it is its flat face's plane (fit_side() took that) and x lies in front of it;
+    /// else the plane of its vertices nearby (collect_nearby_side_points(), left in
+    /// scratch.points; none with fewer than the fit's minimum), flat where they scatter about it
+    /// by at most the junction scatter. In front of both faces, x lies in the empty corner of a
+    /// concave edge, where OpenVDB's error puts the face's vertices around off it
+    /// (near/concave_bevels.h). Behind one, at a convex edge, the face's plane is taken only as
+    /// its vertices around give it: on the pocketed block by surface nets, the top's vertices
+    /// beside the hole's rim (a cylinder of 3.8 pitches) lie off the top, and its plane met the
+    /// wall's surface off the rim (15 of the 158 vertices between patches then off their edges).
+    struct NearbySide {
+        bool flat = false;
+        std::optional<PlaneFit> fit;
+    };
+    NearbySide nearby_side(Index patch, const std::optional<PlaneFit>& fit, const Vec3& x,
+                           Scratch& scratch) const {
         if (fit && is_face_plane(patch, fit->plane) && fit->plane.signed_distance(x) >= 0.0)
-            return fit->plane;
-        Vec3 facing = collect_side_points(patch, scratch, scratch.fit_reached);
-        if (scratch.points.size() < static_cast<std::size_t>(options_.min_fit_points))
-            facing = collect_side_points(patch, scratch);
-        if (scratch.points.size() < static_cast<std::size_t>(options_.min_fit_points))
-            return std::nullopt;
-        const std::optional<PlaneFit> own = fit_plane(scratch.points, facing);
-        if (!own || own->rms_distance > options_.max_junction_scatter * rule_.grid.pitch)
-            return std::nullopt;
-        return own->plane;
+            return {true, fit};
+        const Vec3 facing = collect_nearby_side_points(patch, scratch);
+        const std::optional<PlaneFit> own = plane_of(scratch.points, facing);
+        return {own && own->rms_distance <= options_.max_junction_scatter * rule_.grid.pitch, own};
     }
 
-    /// The second-order surface over scratch.points (facing `facing`) near x: none unless it
-    /// fits them within kCurvedJunctionScatter and kBendShare times as closely as their plane.
-    std::optional<SideSurface> bent_surface(const Vec3& facing, const Vec3& x,
-                                            std::span<const Vec3> points) const {
+    /// collect_side_points() of the vertices within the fit rings where the side has enough of
+    /// them (the surface's own higher-order terms grow with the reach), else of all gathered.
+    Vec3 collect_nearby_side_points(Index patch, Scratch& scratch) const {
+        const Vec3 facing = collect_side_points(patch, scratch, scratch.fit_reached);
+        if (scratch.points.size() >= static_cast<std::size_t>(options_.min_fit_points))
+            return facing;
+        return collect_side_points(patch, scratch);
+    }
+
+    /// The plane of the points (facing `facing`); none with fewer than the fit's minimum.
+    std::optional<PlaneFit> plane_of(std::span<const Vec3> points, const Vec3& facing) const {
         if (points.size() < static_cast<std::size_t>(options_.min_fit_points)) return std::nullopt;
-        const std::optional<PlaneFit> plane = fit_plane(points, facing);
+        return fit_plane(points, facing);
+    }
+
+    /// The second-order surface over the points near x, over their plane `plane`: none unless
+    /// it fits them within kCurvedJunctionScatter and kBendShare times as closely as the plane.
+    std::optional<SideSurface> bent_surface(const std::optional<PlaneFit>& plane, const Vec3& x,
+                                            std::span<const Vec3> points) const {
         if (!plane) return std::nullopt;
         SideSurface s{plane->plane, fit_height_quadric(points, plane->plane, x)};
         if (!s.bent || s.bent->rms_distance > kCurvedJunctionScatter * rule_.grid.pitch ||
@@ -549,36 +560,32 @@ private:
         return s;
     }
 
-    /// The curved side `patch` of v near x: bent_surface() of its vertices within the fit rings
-    /// (all those gathered where it has too few there). Next to flat sides (`flat`), also that
-    /// of its vertices gathered within the other side fit rings and farther than kDisplacedRows
-    /// from every flat plane, taken instead where the nearer ones do not lie on it (within
+    /// The curved side `patch` of v near x: `nearby`, bent_surface() of its vertices nearby
+    /// (which scratch.near_rows holds on entry). Next to flat sides (`flat`), also that of its
+    /// vertices gathered within the other side fit rings and farther than kDisplacedRows from
+    /// every flat plane, taken instead where the nearer ones do not lie on it (within
     /// kCurvedJunctionScatter, rms): OpenVDB's vertices along a concave edge lie up to a quarter
     /// of a pitch in front of their face over two cells (near/concave_bevels.h), and a quadric
     /// bends to them (spool by OpenVDB, a flange's edge on the hub: the junction 0.4 mm off it
     /// at pitch 0.4). Surface nets' lie on the face there, and their nearer fit stays.
     std::optional<SideSurface> curved_side(Index v, Index patch, const Vec3& x,
                                            std::span<const Plane* const> flat,
+                                           const std::optional<SideSurface>& nearby,
                                            Scratch& scratch) const {
         const double h = rule_.grid.pitch;
-        Vec3 facing = collect_side_points(patch, scratch, scratch.fit_reached);
-        if (scratch.points.size() < static_cast<std::size_t>(options_.min_fit_points))
-            facing = collect_side_points(patch, scratch);
-        const std::optional<SideSurface> nearby = bent_surface(facing, x, scratch.points);
         const auto displaced = [&](const Vec3& q) {
             return std::any_of(flat.begin(), flat.end(), [&](const Plane* p) {
                 return std::abs(p->signed_distance(q)) < kDisplacedRows * h;
             });
         };
         std::vector<Vec3>& near_rows = scratch.near_rows;
-        near_rows.clear();
-        std::copy_if(scratch.points.begin(), scratch.points.end(), std::back_inserter(near_rows),
-                     displaced);
+        std::erase_if(near_rows, [&](const Vec3& q) { return !displaced(q); });
         if (near_rows.empty()) return nearby;
         gather_rings(neighbours_, v, options_.other_side_fit_rings, kMaxOtherSideGathered, scratch);
-        facing = collect_side_points(patch, scratch);
+        const Vec3 facing = collect_side_points(patch, scratch);
         std::erase_if(scratch.points, displaced);
-        const std::optional<SideSurface> far = bent_surface(facing, x, scratch.points);
+        const std::optional<SideSurface> far =
+            bent_surface(plane_of(scratch.points, facing), x, scratch.points);
         if (!far || (nearby && rms_off(*far, near_rows) <= kCurvedJunctionScatter * h))
             return nearby;
         return far;
@@ -605,8 +612,8 @@ private:
     /// within kCurvedJunctionScatter, one side at most is curved, and the surfaces part there by
     /// more than the junction angle. One curved side: where two meet, both fits' errors add, and no
     /// part measured gains from them (with two allowed the Edge F-scores of docs/results.md's
-    /// surface-nets and OpenVDB rows agreed with these within 0.002). A flat side's plane is
-    /// flat_side()'s, the curved side's surface curved_side()'s.
+    /// surface-nets and OpenVDB rows agreed with these within 0.002). Each side as
+    /// nearby_side() gives it; the curved side's surface curved_side()'s.
     std::optional<Vec3> point_on_curved_junction(Index v, std::span<const Index> patches,
                                                  const Fits& fits, Scratch& scratch) const {
         const double h = rule_.grid.pitch;
@@ -615,20 +622,22 @@ private:
         std::array<const Plane*, 3> flat_planes{};
         std::size_t flat_count = 0;
         std::size_t curved = patches.size();
+        std::optional<SideSurface> nearby;  // the curved side's, over its vertices nearby
         for (std::size_t i = 0; i < patches.size(); ++i) {
-            const std::optional<Plane> plane = flat_side(patches[i], fits[i], x, scratch);
-            if (plane) {
-                surfaces[i].plane = *plane;
+            const NearbySide side = nearby_side(patches[i], fits[i], x, scratch);
+            if (side.flat) {
+                surfaces[i].plane = side.fit->plane;
                 flat_planes[flat_count++] = &surfaces[i].plane;
-            } else if (curved == patches.size()) {
-                curved = i;
-            } else {
-                return std::nullopt;
+                continue;
             }
+            if (curved < patches.size()) return std::nullopt;
+            curved = i;
+            nearby = bent_surface(side.fit, x, scratch.points);
+            scratch.near_rows.assign(scratch.points.begin(), scratch.points.end());
         }
         if (curved < patches.size()) {
             const std::optional<SideSurface> bent = curved_side(
-                v, patches[curved], x, std::span(flat_planes.data(), flat_count), scratch);
+                v, patches[curved], x, std::span(flat_planes.data(), flat_count), nearby, scratch);
             if (!bent) return std::nullopt;
             surfaces[curved] = *bent;
         }
