@@ -100,7 +100,12 @@ struct MoveRule {
 /// third face): the point of it nearest the vertex within its input
 /// cell, or, where it misses that cell, the cell's point nearest it; where no plane crosses the
 /// input cell (the mesher put the vertex where the surface is not, as OpenVDB does across a
-/// concave corner, near/concave_bevels.h), within the cells around it too. A band vertex of a patch
+/// concave corner, near/concave_bevels.h), within the cells around it too; three patches met
+/// only beyond its ring give their corner where the vertex lies in front of all three and the
+/// corner within that reach, else the two planes nearest it. A vertex of a flat face off the
+/// bands moves onto the face's plane within its cell only where it lies in front of it (by at
+/// most half a pitch) and of another flat face within two pitches (the empty corner of a
+/// concave edge, where OpenVDB displaces a face's rows). A band vertex of a patch
 /// that lies off its own plane goes instead onto where its sides' planes meet, where that crosses
 /// its cell and every face around it then lies on one side: its two other corners of one patch, or
 /// one of them on a junction too (the largest set of such vertices, which does not depend on the
