@@ -317,7 +317,7 @@ private:
     /// front of another flat face within the fit rings, within two pitches, the two parting
     /// by more than the junction angle: in the empty corner of a concave edge, where OpenVDB
     /// puts the rows beside the edge up to a quarter of a pitch off their face (stepped_block
-    /// turned at 100 cells: 51 of the 162 vertices within two pitches of its pocket's floor edge
+    /// turned at 100 cells: 47 of the 194 vertices within two pitches of its pocket's floor edge
     /// lay more than 0.05 pitches off the surface after the moves, 9 with this). Anywhere else a
     /// vertex in front of a flat face may be one of a curved face beside it that segmentation
     /// gave the flat one (sphere_part by OpenVDB, aligned: Edge F-score 0.849 -> 0.832 with the
