@@ -238,9 +238,9 @@ TEST(OpenVdbMesher, ABossesConcaveCircleComesBackOnTheCircle) {
     test::expect_no_harm(input, r, options);
 }
 
-/// A block with a pocket 20 x 16.67 x 12 mm (the stepped block's of the CAD corpus at 5/6 of its
-/// size), sampled by the simulator at kPitch / 4; the pocket's floor corners, where three concave
-/// edges meet, go to `corners`.
+/// A block with a pocket 20 x 16.67 x 12 mm (about the stepped block's of the CAD corpus at 5/6
+/// of its size), sampled by the simulator at kPitch / 4; the pocket's floor corners, where three
+/// concave edges meet, go to `corners`.
 Mesh pocketed_block(std::vector<Vec3>& corners) {
     const sim::CsgSolid solid(sim::parse_csg(R"({"solid": {"difference": [
         {"box": {"min": [0.37, 0.29, 0.41], "max": [24.37, 21.29, 16.41]}},
@@ -262,9 +262,9 @@ Mesh pocketed_block(std::vector<Vec3>& corners) {
 //   three faces' corner lies within the cells around it, it goes there (5 of the 16 when this
 //   test was written).
 // - A vertex between patches beside a corner may have a face with fewer vertices off the band
-//   around it than a plane is fitted to: it stayed where OpenVDB put it, off both faces (203 of
-//   the 1932 vertices between patches here). Where those few lie on their flat face's plane, that
-//   plane is taken (134 stay when this test was written).
+//   around it than a plane is fitted to: it stayed where OpenVDB put it, off both faces (203
+//   vertices between patches here stayed put). Where those few lie on their flat face's plane,
+//   that plane is taken (131 stay when this test was written).
 TEST(OpenVdbMesher, APocketsCornersComeBack) {
     std::vector<Vec3> corners;
     const Mesh fine = pocketed_block(corners);
