@@ -160,13 +160,6 @@ TEST(OpenVdbMesher, TheTurnedLBlocksConcaveEdgeComesBackNearerTheEdge) {
     EXPECT_GT(restored, 0.45);
 }
 
-/// The distance from x to the line through a and b.
-double distance_to_line(const Vec3& x, const Vec3& a, const Vec3& b) {
-    const Vec3 along = (b - a).normalized();
-    const Vec3 off = x - a;
-    return (off - off.dot(along) * along).norm();
-}
-
 // OpenVDB displaces the rows of a face beside a concave edge into the empty corner, up to a
 // quarter of a pitch off the face; those a segmentation keeps in the face's patch, off its
 // band, stayed there, and the faces between them and the face's vertices on its plane made a
@@ -188,7 +181,7 @@ TEST(OpenVdbMesher, TheTurnedLBlocksFaceRowsBesideItsConcaveEdgeGoOntoTheirFaces
         for (Index v = 0; v < input.vertex_count(); ++v) {
             const Vec3 x = turn.transpose() * input.positions[v];
             if (r.segmentation.vertex_patch[v] == kNoIndex ||
-                distance_to_line(x, concave->a, concave->b) > 2.0 * kPitch)
+                test::distance_to_segment(x, concave->a, concave->b) > 2.0 * kPitch)
                 continue;
             ++beside;
             off_input += fine.distance_to_surface(x) > 0.05 * kPitch;
