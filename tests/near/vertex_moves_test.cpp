@@ -416,6 +416,14 @@ TEST(VertexMoves, MovesThatTurnAFaceOverAreTakenBackBeforeTheRound) {
     }
 }
 
+TEST(VertexMoves, AVertexMovedOntoAnotherPatchsFaceTakesThatPatch) {
+    VertexMoves moves;
+    moves.moved = {1, 0, 1, 1};
+    moves.onto_other_patch = {{0, 7}, {1, 8}, {3, 9}};  // vertex 1's move was taken back
+    const std::vector<Index> patches = patches_after_moves({2, 2, 3, kNoIndex}, moves);
+    EXPECT_EQ(patches, (std::vector<Index>{7, 2, 3, 9}));
+}
+
 TEST(VertexMoves, RefusesABadGrid) {
     const Mesh mesh = test::small_part(SmallPart::PocketedBlock);
     const Detection d = detect_bands(mesh, build_connectivity(mesh), {});

@@ -125,6 +125,7 @@ struct Target {
     /// (keep_one_sided_junctions()).
     std::optional<Vec3> junction;
     bool between_patches = false;  ///< `point` is on (or beside) the junction of its patches
+    Index other_patch = kNoIndex;  ///< the patch whose face `point` is on, where not its own
 };
 
 struct Scratch {
@@ -295,9 +296,12 @@ public:
         if (count == 0) return {};
         const std::span<const Side> around(sides.data(), count);
         // A plane fitted farther out leads only onto a junction (patch_sides()).
-        const std::optional<Vec3> own =
-            own_fitted_farther ? std::nullopt : point_on_own_side(v, around, scratch);
-        return {own, point_on_sides_junction(v, around), false};
+        if (own_fitted_farther) return {std::nullopt, point_on_sides_junction(v, around), false};
+        const std::optional<Vec3> own = point_on_own_side(v, around, scratch);
+        if (own || rule_.placement != VertexPlacement::Near)
+            return {own, point_on_sides_junction(v, around), false};
+        const auto [other, patch] = point_on_other_side(v, around, scratch);
+        return {other, point_on_sides_junction(v, around), false, patch};
     }
 
 private:
@@ -1272,6 +1276,40 @@ private:
         return valid ? y : std::nullopt;
     }
 
+    /// Near, a band vertex with no point on its own side: the nearest point within its reach
+    /// on another side's surface (its second-order surface where curved, point_on_curved(); its
+    /// plane where that is flat within the junction scatter) that bounds the solid next to every
+    /// other side, its own among them; and that side's patch, which the moved mesh's
+    /// segmentation gives the vertex (patches_after_moves()). OpenVDB puts the vertex of a cell
+    /// a convex edge crosses behind both faces, nearer the other face than its own where the
+    /// edge runs off the grid axes; its own plane's foot then lies past the edge, and where
+    /// keep_one_sided_junctions() also withdrew its junction it stayed off the surface, a crease
+    /// each side of it (hex_prism turned at 100 cells: 21 of the top face's band vertices 0.2 to
+    /// 0.4 pitches behind it). Left in its own patch on the other face, its edge points were
+    /// placed with its own face's feature normal and the faces to its own patch's vertices were
+    /// not cut (docs/method.md). A curved side's plane put a vertex of mech's floor 0.1 mm above
+    /// it, and two split pieces beside it turned over.
+    std::pair<std::optional<Vec3>, Index> point_on_other_side(Index v, std::span<const Side> sides,
+                                                              Scratch& scratch) const {
+        const Vec3& x = current_.mesh.positions[v];
+        std::optional<Vec3> nearest;
+        Index patch = kNoIndex;
+        for (std::size_t i = 1; i < sides.size(); ++i) {
+            std::optional<Vec3> y = point_on_curved(v, sides[i], scratch);
+            if (!y && sides[i].fit.rms_distance <= options_.max_junction_scatter * rule_.grid.pitch)
+                y = point_on(v, sides[i]);
+            if (!y || !within_reach(input_[v], *y)) continue;
+            const bool valid = std::all_of(sides.begin(), sides.end(), [&](const Side& b) {
+                return &b == &sides[i] || bounds_solid(*y, sides[i], b, on_plane_tolerance());
+            });
+            if (valid && (!nearest || (*y - x).squaredNorm() < (*nearest - x).squaredNorm())) {
+                nearest = y;
+                patch = sides[i].patch;
+            }
+        }
+        return {nearest, patch};
+    }
+
     const InputSurface& current_;
     const std::vector<Vec3>& input_;
     const std::vector<Index>& vertex_patch_;
@@ -1379,6 +1417,7 @@ VertexMoves plan_vertex_moves(const InputSurface& current, const std::vector<Vec
         using JunctionPoints = std::vector<std::pair<Index, Vec3>>;
         tbb::enumerable_thread_specific<JunctionPoints> junctions;
         tbb::enumerable_thread_specific<Scratch> scratches;
+        tbb::enumerable_thread_specific<std::vector<std::pair<Index, Index>>> other_patches;
         tbb::parallel_for(
             tbb::blocked_range<Index>(0, static_cast<Index>(mesh.vertex_count()), 2048),
             [&](const auto& range) {
@@ -1387,6 +1426,8 @@ VertexMoves plan_vertex_moves(const InputSurface& current, const std::vector<Vec
                 for (Index v = range.begin(); v != range.end(); ++v) {
                     const Target t = planner.target(v, scratch);
                     if (t.point) moves.position[v] = *t.point;
+                    if (t.point && t.other_patch != kNoIndex)
+                        other_patches.local().emplace_back(v, t.other_patch);
                     on_junction[v] = t.between_patches && t.point.has_value();
                     if (!t.junction) continue;
                     found.emplace_back(v, *t.junction);
@@ -1399,9 +1440,22 @@ VertexMoves plan_vertex_moves(const InputSurface& current, const std::vector<Vec
                 if (may_take[v]) moves.position[v] = point;
             }
         }
+        for (const auto& found : other_patches) {
+            for (const auto& [v, patch] : found) {
+                if (!may_take[v]) moves.onto_other_patch.emplace_back(v, patch);
+            }
+        }
+        std::sort(moves.onto_other_patch.begin(), moves.onto_other_patch.end());
     }
     recount(input, moves);
     return moves;
+}
+
+std::vector<Index> patches_after_moves(std::vector<Index> vertex_patch, const VertexMoves& moves) {
+    for (const auto& [v, patch] : moves.onto_other_patch) {
+        if (moves.moved[v]) vertex_patch[v] = patch;
+    }
+    return vertex_patch;
 }
 
 Mesh moved_mesh(const Mesh& mesh, const VertexMoves& moves) {

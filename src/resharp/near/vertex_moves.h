@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "resharp/mesh/connectivity.h"
@@ -62,6 +63,10 @@ struct VertexMoves {
     std::vector<std::uint8_t> moved;  ///< #V: 1 where position differs from the input's
     std::size_t moved_count = 0;
     double largest_move = 0.0;  ///< mm, from the input position
+    /// Near: the band vertices that go onto another patch's face, their own side giving them no
+    /// point, with that patch; sorted by vertex. The moved mesh is segmented with them in it
+    /// (patches_after_moves()).
+    std::vector<std::pair<Index, Index>> onto_other_patch;
 };
 
 /// Where the planes a vertex moves onto come from.
@@ -93,9 +98,10 @@ struct MoveRule {
 /// and a vertex) is none. Band vertices move by the shortest way onto the side of their own
 /// patch, where it bounds the solid next to the other sides and within their input cell (within
 /// the cells around where that side is a flat face's plane that misses the cell; the others lie
-/// on their surface already, up to its curvature); a vertex of no patch whose ring meets two or
-/// three patches (those of its ring's vertices, or where they have fewer than two, of the
-/// vertices within the fit rings: the two whose planes lie nearest it) moves onto where their
+/// on their surface already, up to its curvature), or, where their own gives no such point,
+/// onto another side's that does (VertexMoves::onto_other_patch); a vertex of no patch whose ring
+/// meets two or three patches (those of its ring's vertices, or where they have fewer than two, of
+/// the vertices within the fit rings: the two whose planes lie nearest it) moves onto where their
 /// planes meet (the sharp edge or corner; not where its normal runs along an edge's line, on a
 /// third face): the point of it nearest the vertex within its input
 /// cell, or, where it misses that cell, the cell's point nearest it; where no plane crosses the
@@ -121,6 +127,11 @@ VertexMoves plan_vertex_moves(const InputSurface& current, const std::vector<Vec
                               const std::vector<Index>& vertex_patch,
                               const BandClassification& bands, const MoveRule& rule,
                               const VertexMoveOptions& options = {});
+
+/// `vertex_patch` (#V) with every vertex that `moves` still moves onto another patch's face
+/// (VertexMoves::onto_other_patch) in that patch: its crossing edges are then those to its own
+/// patch's vertices, which the split cuts, and not those to the face it lies on.
+std::vector<Index> patches_after_moves(std::vector<Index> vertex_patch, const VertexMoves& moves);
 
 /// The mesh with every vertex at its planned position; faces as they were.
 Mesh moved_mesh(const Mesh& mesh, const VertexMoves& moves);

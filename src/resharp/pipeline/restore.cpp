@@ -713,6 +713,12 @@ private:
         const std::size_t planned = moves.moved_count;
         moves = without_turned_over_faces(mesh, *input.connectivity, std::move(moves));
         report_.moves_undone += planned - moves.moved_count;
+        // A vertex moved onto another patch's face is that patch's in the moved mesh: its
+        // feature normal and crossing edges (near/vertex_moves.h).
+        if (!smoothed) {
+            input.features.vertex_patch =
+                patches_after_moves(std::move(input.features.vertex_patch), moves);
+        }
         // Nothing but the fallback below reads the input's bands and feature normals: where
         // rounds follow, they go before the rounds allocate, and the fallback makes them anew
         // (peak memory). Midpoint: gone already, with the segmentations.
