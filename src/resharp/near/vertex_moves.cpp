@@ -98,7 +98,7 @@ constexpr double kDisplacedRows = 1.5;
 /// Near: where a flat face's vertices around a vertex may lie off its plane for it to be taken
 /// as theirs (fit_side()).
 enum class OffFace : std::uint8_t {
-    /// On either side: the sides of a sharp junction (point_on_junction(), which holds them
+    /// On either side: the sides of a sharp junction (junction_target(), which holds them
     /// to flat planes parting sharply).
     EitherSide,
     /// In front only, the side the face faces: a band vertex's own side. OpenVDB's error beside
@@ -284,7 +284,7 @@ public:
     /// Where v may go; nothing if it stays.
     Target target(Index v, Scratch& scratch) const {
         if (rule_.scope == FitScope::Patches && is_between_patches(v))
-            return {point_on_junction(v, scratch), std::nullopt, true};
+            return junction_target(v, scratch);
         if (!patch_plane_.empty() && vertex_patch_[v] == kNoIndex)
             return {point_between_planes(v, scratch), std::nullopt, false};
         if (rule_.scope == FitScope::Patches && !may_move(v)) return {onto_flat_face(v, scratch)};
@@ -364,42 +364,83 @@ private:
     /// Where the planes of the two or three patches around v meet (the sharp edge or corner
     /// between them; the planes fitted farther out where they have none within the fit rings):
     /// the point of their junction nearest v's current place within v's input cell, or, where
-    /// the junction misses the cell, the cell's point nearest it. None unless each patch has a
+    /// the junction misses the cell, the cell's point nearest it (in front of both of two planes,
+    /// the nearer plane's point instead, nearer_face()). None unless each patch has a
     /// plane its vertices scatter about by at most the junction scatter and each two planes part by
     /// more than the junction angle; where a patch is curved, their surfaces' junction instead
     /// (point_on_curved_junction()). Dual meshers place a vertex of the cell a sharp edge crosses
     /// between the faces, off both; the edge itself is where it belongs (dual contouring's vertex).
-    std::optional<Vec3> point_on_junction(Index v, Scratch& scratch) const {
+    Target junction_target(Index v, Scratch& scratch) const {
         std::array<Index, kMaxSides> patches{};
         std::size_t count = add_ring_patches(v, patches, 0);
         const bool beyond_ring = count < 2;
         if (beyond_ring) count = add_reached_patches(v, patches, count, scratch);
-        if (count < 2 || count > 3) return std::nullopt;
+        if (count < 2 || count > 3) return {};
         const std::span<const Index> around(patches.data(), count);
         Fits fits;
         if (fit_sides(v, around, OffFace::EitherSide, fits, scratch) < count)
             fit_missing_farther(v, around, OffFace::EitherSide, fits, scratch);
         std::array<PlaneFit, 3> planes;
         for (std::size_t i = 0; i < count; ++i) {
-            if (!fits[i]) return point_on_curved_junction(v, around, fits, scratch);
+            if (!fits[i]) return on_junction(point_on_curved_junction(v, around, fits, scratch));
             planes[i] = *fits[i];
         }
         const Vec3& x = current_.mesh.positions[v];
         if (beyond_ring && count == 3 && !corner_within_reach(v, planes))
             count = nearest_two_first(x, planes, patches, fits);
         if (!flat_enough(std::span(planes.data(), count)))
-            return point_on_curved_junction(v, std::span(patches.data(), count), fits, scratch);
+            return on_junction(
+                point_on_curved_junction(v, std::span(patches.data(), count), fits, scratch));
         const std::optional<Junction> junction = sharp_junction(std::span(planes.data(), count));
-        if (!junction) return std::nullopt;
+        if (!junction) return {};
         const Cell reach = junction_reach(input_[v], std::span(planes.data(), count));
-        if (count == 2 && turns_along(v, planes[0].plane, planes[1].plane)) return std::nullopt;
+        if (count == 2 && turns_along(v, planes[0].plane, planes[1].plane)) return {};
         const Vec3 y = nearest_to_cell(
             x, [&](const Vec3& p) { return junction->projection(p); }, reach);
         // A cell-mean vertex may be wrong by its cell and no more. Where the edge passes
         // beside the cell (off the grid axes, the cells along a convex edge whose corners all
         // lie outside make no vertex; the vertex beside them stands for their part of the
-        // edge), it goes as near the edge as its cell allows.
-        return reach.clamp(y);
+        // edge), it goes as near the edge as its cell allows; in front of both faces (the empty
+        // corner of a concave edge), onto the nearer face instead.
+        const Vec3 nearest = reach.clamp(y);
+        const bool off_junction =
+            (junction->projection(nearest) - nearest).norm() > on_plane_tolerance();
+        if (count == 2 && off_junction && in_front_of_both(x, planes[0], planes[1])) {
+            const Target onto_face = nearer_face(x, planes, patches, reach);
+            if (onto_face.point) return onto_face;
+        }
+        return on_junction(nearest);
+    }
+
+    /// A vertex between patches going to `point` on (or beside) their junction.
+    static Target on_junction(const std::optional<Vec3>& point) {
+        return {point, std::nullopt, true};
+    }
+
+    /// Whether x lies in front of both planes: in the empty corner where they meet concavely.
+    bool in_front_of_both(const Vec3& x, const PlaneFit& a, const PlaneFit& b) const {
+        return a.plane.signed_distance(x) > on_plane_tolerance() &&
+               b.plane.signed_distance(x) > on_plane_tolerance();
+    }
+
+    /// Near, a vertex between two patches in front of both their planes whose junction misses
+    /// its reach: the point of the nearer plane within the reach that bounds the solid next to
+    /// the other, with that plane's patch (none where neither plane has one). OpenVDB's bevel
+    /// across a concave edge off the grid axes puts rows of vertices between the patches in the
+    /// empty corner, up to a pitch or more from the edge; brought as near the edge as their cells
+    /// allow, they stayed off both faces, a crease each side of them (hex_prism turned at 100
+    /// cells: its triangular pocket's edges).
+    Target nearer_face(const Vec3& x, const std::array<PlaneFit, 3>& planes,
+                       const std::array<Index, kMaxSides>& patches, const Cell& reach) const {
+        Target nearest;
+        for (int i = 0; i < 2; ++i) {
+            const Side side{patches[i], planes[i]}, other{patches[1 - i], planes[1 - i]};
+            const std::optional<Vec3> y = nearest_within(x, side.fit.plane, reach);
+            if (!y || !bounds_solid(*y, side, other, on_plane_tolerance())) continue;
+            if (!nearest.point || (*y - x).squaredNorm() < (*nearest.point - x).squaredNorm())
+                nearest = {y, std::nullopt, false, patches[i]};
+        }
+        return nearest;
     }
 
     /// Midpoint: a vertex that segmentation left in a band with no patch of its own, among two

@@ -63,8 +63,9 @@ struct VertexMoves {
     std::vector<std::uint8_t> moved;  ///< #V: 1 where position differs from the input's
     std::size_t moved_count = 0;
     double largest_move = 0.0;  ///< mm, from the input position
-    /// Near: the band vertices that go onto another patch's face, their own side giving them no
-    /// point, with that patch; sorted by vertex. The moved mesh is segmented with them in it
+    /// Near: the vertices that go onto another patch's face (band vertices whose own side gives
+    /// them no point, vertices between patches in the empty corner of a concave edge), with
+    /// that patch; sorted by vertex. The moved mesh is segmented with them in it
     /// (patches_after_moves()).
     std::vector<std::pair<Index, Index>> onto_other_patch;
 };
@@ -104,7 +105,10 @@ struct MoveRule {
 /// the vertices within the fit rings: the two whose planes lie nearest it) moves onto where their
 /// planes meet (the sharp edge or corner; not where its normal runs along an edge's line, on a
 /// third face): the point of it nearest the vertex within its input
-/// cell, or, where it misses that cell, the cell's point nearest it; where no plane crosses the
+/// cell, or, where it misses that cell, the cell's point nearest it (where the vertex lies in
+/// front of both of two planes, the empty corner of a concave edge, the nearer plane's point
+/// within that reach instead, that plane's patch taken, VertexMoves::onto_other_patch); where
+/// no plane crosses the
 /// input cell (the mesher put the vertex where the surface is not, as OpenVDB does across a
 /// concave corner, near/concave_bevels.h), within the cells around it too; three patches met
 /// only beyond its ring give their corner where the vertex lies in front of all three and the
