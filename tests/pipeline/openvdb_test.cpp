@@ -196,7 +196,8 @@ TEST(OpenVdbMesher, TheTurnedLBlocksFaceRowsBesideItsConcaveEdgeGoOntoTheirFaces
     }
     EXPECT_GT(beside, 200u);     // 272 here
     EXPECT_GT(off_input, 100u);  // 129
-    EXPECT_LT(off_output, 45u);  // 77 before, 30 when this test was written
+    EXPECT_LT(off_output, 28u);  // 77 before, 30 when this test was written, 24 since a face
+                                 // that misses the vertex's cell is taken in the cells around
 }
 
 /// A hexagonal prism 10 mm across its flats and 6 mm tall about (6.1, 5.9, 4.2) with a
@@ -342,7 +343,8 @@ TEST(OpenVdbMesher, TheTurnedHexagonalPrismsBandVerticesGoOntoAFace) {
 // they stayed in front of both faces: 261 of the vertices within two pitches of the pocket's
 // concave edges here lay more than 0.05 of a pitch off every face after the restoration (255
 // with the convex edges' vertices above on their other face). Those go onto the nearer face
-// instead (224 when this test was written).
+// instead (224 when this test was written; 219 since a face's row in front of it whose cell the
+// face misses goes onto it within the cells around).
 TEST(OpenVdbMesher, TheTurnedHexagonalPrismsPocketRowsGoOntoAFace) {
     const RestoreOptions options;
     std::size_t beside = 0, off_input = 0, off_output = 0;
@@ -368,7 +370,7 @@ TEST(OpenVdbMesher, TheTurnedHexagonalPrismsPocketRowsGoOntoAFace) {
     }
     EXPECT_GT(beside, 500u);     // 745 here
     EXPECT_GT(off_input, 300u);  // 478
-    EXPECT_LT(off_output, 240u);
+    EXPECT_LT(off_output, 222u);
 }
 
 /// A boss of radius 3.3 mm (6.6 pitches) standing 2.9 mm on a plate, off the grid planes: the

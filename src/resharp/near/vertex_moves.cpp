@@ -317,15 +317,17 @@ private:
     }
 
     /// Near, a vertex of a flat face off the bands: the point of the face's plane nearest it
-    /// within its input cell, where it lies in front of the plane by at most kOffFaceReach and in
-    /// front of another flat face within the fit rings, within two pitches, the two parting
-    /// by more than the junction angle: in the empty corner of a concave edge, where OpenVDB
-    /// puts the rows beside the edge up to a quarter of a pitch off their face (stepped_block
-    /// turned at 100 cells: 47 of the 194 vertices within two pitches of its pocket's floor edge
-    /// lay more than 0.05 pitches off the surface after the moves, 9 with this). Anywhere else a
-    /// vertex in front of a flat face may be one of a curved face beside it that segmentation
-    /// gave the flat one (sphere_part by OpenVDB, aligned: Edge F-score 0.849 -> 0.832 with the
-    /// face's plane taken for every such vertex). None elsewhere: the vertex stays.
+    /// within its input cell (where the plane misses the cell, within the cells around:
+    /// nearest_beyond_cell(); on hex_prism turned by OpenVDB, rows of its pocket's floor 0.2 to
+    /// 0.35 pitches in front of it, in cells it misses), where it lies in front of the plane by at
+    /// most kOffFaceReach and in front of another flat face within the fit rings, within two
+    /// pitches, the two parting by more than the junction angle: in the empty corner of a concave
+    /// edge, where OpenVDB puts the rows beside the edge up to a quarter of a pitch off their face
+    /// (stepped_block turned at 100 cells: 47 of the 194 vertices within two pitches of its
+    /// pocket's floor edge lay more than 0.05 pitches off the surface after the moves, 9 with
+    /// this). Anywhere else a vertex in front of a flat face may be one of a curved face beside it
+    /// that segmentation gave the flat one (sphere_part by OpenVDB, aligned: Edge F-score 0.849 ->
+    /// 0.832 with the face's plane taken for every such vertex). None elsewhere: the vertex stays.
     std::optional<Vec3> onto_flat_face(Index v, Scratch& scratch) const {
         if (rule_.placement != VertexPlacement::Near || vertex_patch_[v] == kNoIndex ||
             !is_flat_face(vertex_patch_[v]))
@@ -346,7 +348,8 @@ private:
         };
         if (std::none_of(patches.begin() + 1, patches.begin() + count, in_corner_with))
             return std::nullopt;
-        return nearest_in_cell(x, face, input_[v]);
+        const std::optional<Vec3> y = nearest_in_cell(x, face, input_[v]);
+        return y ? y : nearest_beyond_cell(x, face, input_[v]);
     }
 
     /// Whether v has a patch and is one to move: near meshes move band vertices only (of the
@@ -1289,11 +1292,18 @@ private:
     std::optional<Vec3> point_on_face_beyond_cell(Index v, const Side& own) const {
         if (rule_.placement != VertexPlacement::Near || !is_face_plane(own.patch, own.fit.plane))
             return std::nullopt;
-        const Plane& face = flat_face_[own.patch]->plane;
-        const Cell cell = cell_of(input_[v]);
+        return nearest_beyond_cell(current_.mesh.positions[v], flat_face_[own.patch]->plane,
+                                   input_[v]);
+    }
+
+    /// Where `face` misses the grid cell of input place `from`, its point nearest x within the
+    /// cells around (point_on_face_beyond_cell()); none where it crosses the cell, or misses
+    /// those too.
+    std::optional<Vec3> nearest_beyond_cell(const Vec3& x, const Plane& face,
+                                            const Vec3& from) const {
+        const Cell cell = cell_of(from);
         if (cell.crossed_by(face)) return std::nullopt;
-        return nearest_within(current_.mesh.positions[v], face,
-                              cell.with_neighbours(rule_.grid.pitch));
+        return nearest_within(x, face, cell.with_neighbours(rule_.grid.pitch));
     }
 
     /// v's place on its own patch's plane (sides[0]), if within reach of its input place (or

@@ -113,20 +113,20 @@ struct MoveRule {
 /// concave corner, near/concave_bevels.h), within the cells around it too; three patches met
 /// only beyond its ring give their corner where the vertex lies in front of all three and the
 /// corner within that reach, else the two planes nearest it. A vertex of a flat face off the
-/// bands moves onto the face's plane within its cell only where it lies in front of it (by at
-/// most half a pitch) and of another flat face within two pitches (the empty corner of a
-/// concave edge, where OpenVDB displaces a face's rows). A band vertex of a patch
-/// that lies off its own plane goes instead onto where its sides' planes meet, where that crosses
-/// its cell and every face around it then lies on one side: its two other corners of one patch, or
-/// one of them on a junction too (the largest set of such vertices, which does not depend on the
-/// order they are judged in). Midpoint: every vertex with a plane of its own patch (or,
-/// Neighbourhood, around it) moves along its input grid edge onto it, within the edge; a patch
-/// whose vertices off the bands scatter about one plane as midpoints of one face's crossings do has
-/// that plane, fitted to all of them, and a vertex of no patch among such patches goes where its
-/// grid edge meets the boundary their planes make. Exact: nothing moves. A vertex without a plane
-/// keeps its current position. Each vertex is decided alone, from the inputs only: the same on any
-/// number of threads. The result counts moves from the input positions. \throws InvalidInput if the
-/// grid's pitch is not positive or an option is out of range.
+/// bands moves onto the face's plane within its cell (the cells around where it misses that) only
+/// where it lies in front of it (by at most half a pitch) and of another flat face within two
+/// pitches (the empty corner of a concave edge, where OpenVDB displaces a face's rows). A band
+/// vertex of a patch that lies off its own plane goes instead onto where its sides' planes meet,
+/// where that crosses its cell and every face around it then lies on one side: its two other
+/// corners of one patch, or one of them on a junction too (the largest set of such vertices, which
+/// does not depend on the order they are judged in). Midpoint: every vertex with a plane of its own
+/// patch (or, Neighbourhood, around it) moves along its input grid edge onto it, within the edge; a
+/// patch whose vertices off the bands scatter about one plane as midpoints of one face's crossings
+/// do has that plane, fitted to all of them, and a vertex of no patch among such patches goes where
+/// its grid edge meets the boundary their planes make. Exact: nothing moves. A vertex without a
+/// plane keeps its current position. Each vertex is decided alone, from the inputs only: the same
+/// on any number of threads. The result counts moves from the input positions. \throws InvalidInput
+/// if the grid's pitch is not positive or an option is out of range.
 VertexMoves plan_vertex_moves(const InputSurface& current, const std::vector<Vec3>& input,
                               const std::vector<Index>& vertex_patch,
                               const BandClassification& bands, const MoveRule& rule,
