@@ -210,6 +210,14 @@ struct TurnedPrism {
     std::vector<Plane> faces;
     std::vector<std::pair<Vec3, Vec3>> convex_edges;
     std::vector<std::pair<Vec3, Vec3>> concave_edges;
+
+    /// Whether x lies more than 0.05 of a pitch off every face's plane.
+    bool off_surface(const Vec3& x) const {
+        double nearest = std::numeric_limits<double>::infinity();
+        for (const Plane& face : faces)
+            nearest = std::min(nearest, std::abs(face.signed_distance(x)));
+        return nearest > 0.05 * kPitch;
+    }
 };
 
 /// The CSG halfspaces (with a leading comma each) of the planes through centre + turn * (reach *
@@ -304,12 +312,6 @@ TEST(OpenVdbMesher, TheTurnedHexagonalPrismsBandVerticesGoOntoAFace) {
         const TurnedPrism prism = turned_hex_prism(turn_of(radians));
         const Mesh input = extras::openvdb_dual_mesh(prism.mesh, kPitch);
         const RestoreResult r = restore(input, options);
-        const auto off_surface = [&](const Vec3& x) {
-            double nearest = std::numeric_limits<double>::infinity();
-            for (const Plane& face : prism.faces)
-                nearest = std::min(nearest, std::abs(face.signed_distance(x)));
-            return nearest > 0.05 * kPitch;
-        };
         std::vector<std::uint8_t> in_band(input.vertex_count(), 0);
         for (Index f = 0; f < input.face_count(); ++f) {
             if (r.segmentation.face_role[f] == BandRole::None) continue;
@@ -320,8 +322,8 @@ TEST(OpenVdbMesher, TheTurnedHexagonalPrismsBandVerticesGoOntoAFace) {
                 !beside_any(prism.convex_edges, input.positions[v]))
                 continue;
             ++beside;
-            off_input += off_surface(input.positions[v]);
-            off_output += off_surface(r.mesh.positions[v]);
+            off_input += prism.off_surface(input.positions[v]);
+            off_output += prism.off_surface(r.mesh.positions[v]);
         }
         for (const auto& [a, b] : prism.convex_edges) {
             const Vec3 along = (b - a).normalized();
@@ -353,18 +355,12 @@ TEST(OpenVdbMesher, TheTurnedHexagonalPrismsPocketRowsGoOntoAFace) {
         const TurnedPrism prism = turned_hex_prism(turn_of(radians));
         const Mesh input = extras::openvdb_dual_mesh(prism.mesh, kPitch);
         const RestoreResult r = restore(input, options);
-        const auto off_surface = [&](const Vec3& x) {
-            double nearest = std::numeric_limits<double>::infinity();
-            for (const Plane& face : prism.faces)
-                nearest = std::min(nearest, std::abs(face.signed_distance(x)));
-            return nearest > 0.05 * kPitch;
-        };
         for (Index v = 0; v < input.vertex_count(); ++v) {
             const Vec3& x = input.positions[v];
             if (!beside_any(prism.concave_edges, x)) continue;
             ++beside;
-            off_input += off_surface(x);
-            off_output += off_surface(r.mesh.positions[v]);
+            off_input += prism.off_surface(x);
+            off_output += prism.off_surface(r.mesh.positions[v]);
         }
         test::expect_no_harm(input, r, options);
     }
