@@ -35,7 +35,9 @@ class Segmentation:
     """What was detected, on the input mesh (the welded one with weld=True); -1 is no patch."""
 
     is_edge_vertex: _np.ndarray  #: (#V,) bool: edge vertices of the edge-based segmentation
-    vertex_patch: _np.ndarray    #: (#V,) int32: feature patch of each vertex, or -1
+    #: (#V,) int32: feature patch of each vertex, or -1 (a near-surface mesh's: the patches its
+    #: moved mesh was restored with, a vertex moved onto another patch's face in that patch)
+    vertex_patch: _np.ndarray
     face_patch: _np.ndarray      #: (#F,) int32: feature patch of each face, -1 in the bands
     face_role: _np.ndarray       #: (#F,) uint8: 0 untouched, 1 edge triangle, 2 corner triangle
 

@@ -714,7 +714,9 @@ private:
         moves = without_turned_over_faces(mesh, *input.connectivity, std::move(moves));
         report_.moves_undone += planned - moves.moved_count;
         // A vertex moved onto another patch's face is that patch's in the moved mesh: its
-        // feature normal and crossing edges (near/vertex_moves.h).
+        // feature normal and crossing edges (near/vertex_moves.h). It stays so where the harm
+        // rounds give its move up, and in the fallback on the input: a band vertex between the
+        // two faces, either patch's as much as the other's.
         if (!smoothed) {
             input.features.vertex_patch =
                 patches_after_moves(std::move(input.features.vertex_patch), moves);

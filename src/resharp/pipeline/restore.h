@@ -39,7 +39,10 @@ enum class PointFate : std::uint8_t {
 /// and moves planned on them.
 struct Segmentation {
     std::vector<std::uint8_t> is_edge_vertex;  ///< per input vertex (#V): edge-based result, §3
-    std::vector<Index> vertex_patch;    ///< per input vertex (#V): feature patch, or kNoIndex
+    /// Per input vertex (#V): feature patch, or kNoIndex. On a near-surface mesh, the patches
+    /// the moved mesh was restored with: concave bevels dissolved, and a vertex moved onto
+    /// another patch's face in that patch (near/vertex_moves.h).
+    std::vector<Index> vertex_patch;
     std::vector<Index> face_patch;      ///< per input face (#F): feature patch, kNoIndex in bands
     std::vector<BandRole> face_role;    ///< per input face (#F): edge or corner triangle
     std::vector<PointFate> point_fate;  ///< per input face (#F)
