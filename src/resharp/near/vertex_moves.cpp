@@ -895,17 +895,32 @@ private:
         if (!fit) {
             const bool few_on_face = off_face == OffFace::EitherSide && !points.empty() &&
                                      std::all_of(points.begin(), points.end(), on_face);
-            return few_on_face ? flat_face_[patch] : fit;
+            return few_on_face ? face_plane_near(patch, points) : fit;
         }
         const auto on = std::count_if(points.begin(), points.end(), on_face);
-        if (2 * static_cast<std::size_t>(on) >= points.size()) return flat_face_[patch];
+        if (2 * static_cast<std::size_t>(on) >= points.size())
+            return face_plane_near(patch, points);
         const double reach = kOffFaceReach * rule_.grid.pitch;
         const double behind = off_face == OffFace::InFront ? near : reach;
         const bool within = std::all_of(points.begin(), points.end(), [&](const Vec3& q) {
             const double d = face.signed_distance(q);
             return d >= -behind && d <= reach;
         });
-        return within ? flat_face_[patch] : fit;
+        return within ? face_plane_near(patch, points) : fit;
+    }
+
+    /// Flat face `patch`'s plane (flat_faces()) as a side whose vertices near the vertex are
+    /// `points` (not empty): its centroid theirs, brought onto the plane. The whole face's
+    /// centroid may lie anywhere, and bounds_solid() reads a side's centroid as a point of it
+    /// beside the edge: a flange ringing a hub has its centroid on the axis, behind the hub's
+    /// plane, and its concave edge with the hub was taken for convex (spool turned by OpenVDB
+    /// at 100 cells: 152 of the flanges' band vertices in front of them refused their face).
+    PlaneFit face_plane_near(Index patch, std::span<const Vec3> points) const {
+        PlaneFit fit = *flat_face_[patch];
+        Vec3 mean = Vec3::Zero();
+        for (const Vec3& q : points) mean += q;
+        fit.centroid = fit.plane.projection(mean / static_cast<double>(points.size()));
+        return fit;
     }
 
     /// Near: whether `plane` is flat face `patch`'s plane (flat_faces()), as fit_side() gives it.
