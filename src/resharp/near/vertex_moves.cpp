@@ -117,6 +117,18 @@ struct Side {
     PlaneFit fit;
 };
 
+/// The nearest to a vertex of the points offered on its sides' faces, with the face's patch.
+struct FacePoint {
+    std::optional<Vec3> point;
+    Index patch = kNoIndex;
+
+    void offer(const Vec3& x, const Vec3& y, Index face_patch) {
+        if (point && (*point - x).squaredNorm() <= (y - x).squaredNorm()) return;
+        point = y;
+        patch = face_patch;
+    }
+};
+
 /// Where a vertex may go.
 struct Target {
     std::optional<Vec3> point;  ///< where it goes unless it takes the junction below
@@ -296,12 +308,11 @@ public:
         if (count == 0) return {};
         const std::span<const Side> around(sides.data(), count);
         // A plane fitted farther out leads only onto a junction (patch_sides()).
-        if (own_fitted_farther) return {std::nullopt, point_on_sides_junction(v, around), false};
-        const std::optional<Vec3> own = point_on_own_side(v, around, scratch);
-        if (own || rule_.placement != VertexPlacement::Near)
-            return {own, point_on_sides_junction(v, around), false};
-        const auto [other, patch] = point_on_other_side(v, around, scratch);
-        return {other, point_on_sides_junction(v, around), false, patch};
+        FacePoint onto;
+        if (!own_fitted_farther) onto.point = point_on_own_side(v, around, scratch);
+        if (!own_fitted_farther && !onto.point && rule_.placement == VertexPlacement::Near)
+            onto = point_on_other_side(v, around, scratch);
+        return {onto.point, point_on_sides_junction(v, around), false, onto.patch};
     }
 
 private:
@@ -435,15 +446,14 @@ private:
     /// cells: its triangular pocket's edges).
     Target nearer_face(const Vec3& x, const std::array<PlaneFit, 3>& planes,
                        const std::array<Index, kMaxSides>& patches, const Cell& reach) const {
-        Target nearest;
+        FacePoint nearest;
         for (int i = 0; i < 2; ++i) {
             const Side side{patches[i], planes[i]}, other{patches[1 - i], planes[1 - i]};
             const std::optional<Vec3> y = nearest_within(x, side.fit.plane, reach);
-            if (!y || !bounds_solid(*y, side, other, on_plane_tolerance())) continue;
-            if (!nearest.point || (*y - x).squaredNorm() < (*nearest.point - x).squaredNorm())
-                nearest = {y, std::nullopt, false, patches[i]};
+            if (y && bounds_solid(*y, side, other, on_plane_tolerance()))
+                nearest.offer(x, *y, patches[i]);
         }
-        return nearest;
+        return {nearest.point, std::nullopt, false, nearest.patch};
     }
 
     /// Midpoint: a vertex that segmentation left in a band with no patch of its own, among two
@@ -1355,11 +1365,9 @@ private:
     /// placed with its own face's feature normal and the faces to its own patch's vertices were
     /// not cut (docs/method.md). A curved side's plane put a vertex of mech's floor 0.1 mm above
     /// it, and two split pieces beside it turned over.
-    std::pair<std::optional<Vec3>, Index> point_on_other_side(Index v, std::span<const Side> sides,
-                                                              Scratch& scratch) const {
+    FacePoint point_on_other_side(Index v, std::span<const Side> sides, Scratch& scratch) const {
         const Vec3& x = current_.mesh.positions[v];
-        std::optional<Vec3> nearest;
-        Index patch = kNoIndex;
+        FacePoint nearest;
         for (std::size_t i = 1; i < sides.size(); ++i) {
             std::optional<Vec3> y = point_on_curved(v, sides[i], scratch);
             if (!y && sides[i].fit.rms_distance <= options_.max_junction_scatter * rule_.grid.pitch)
@@ -1368,12 +1376,9 @@ private:
             const bool valid = std::all_of(sides.begin(), sides.end(), [&](const Side& b) {
                 return &b == &sides[i] || bounds_solid(*y, sides[i], b, on_plane_tolerance());
             });
-            if (valid && (!nearest || (*y - x).squaredNorm() < (*nearest - x).squaredNorm())) {
-                nearest = y;
-                patch = sides[i].patch;
-            }
+            if (valid) nearest.offer(x, *y, sides[i].patch);
         }
-        return {nearest, patch};
+        return nearest;
     }
 
     const InputSurface& current_;

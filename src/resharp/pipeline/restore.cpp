@@ -716,11 +716,9 @@ private:
         // A vertex moved onto another patch's face is that patch's in the moved mesh: its
         // feature normal and crossing edges (near/vertex_moves.h). It stays so where the harm
         // rounds give its move up, and in the fallback on the input: a band vertex between the
-        // two faces, either patch's as much as the other's.
-        if (!smoothed) {
-            input.features.vertex_patch =
-                patches_after_moves(std::move(input.features.vertex_patch), moves);
-        }
+        // two faces, either patch's as much as the other's. (Midpoint moves take none.)
+        input.features.vertex_patch =
+            patches_after_moves(std::move(input.features.vertex_patch), moves);
         // Nothing but the fallback below reads the input's bands and feature normals: where
         // rounds follow, they go before the rounds allocate, and the fallback makes them anew
         // (peak memory). Midpoint: gone already, with the segmentations.
