@@ -42,18 +42,20 @@ FacesInSweepOrder::FacesInSweepOrder(const Mesh& mesh, std::span<const Index> fa
 }
 
 FacesInSweepOrder::KeyedFace FacesInSweepOrder::keyed(Index f) const {
-    const Vec3& p = mesh_.positions[corners_in_sweep_order(mesh_, f)[0]];
-    return {{p.z(), p.y(), p.x()}, f};
+    const std::array<Index, 3> corners = corners_in_sweep_order(mesh_, f);
+    const Vec3& p = mesh_.positions[corners[0]];
+    return {{p.z(), p.y(), p.x()}, corners, f};
 }
 
-void FacesInSweepOrder::sort_current() {
-    std::sort(current_.begin(), current_.end(), [&](const KeyedFace& a, const KeyedFace& b) {
+void FacesInSweepOrder::order_first(std::size_t end) {
+    const auto first = current_.begin() + static_cast<std::ptrdiff_t>(cursor_);
+    const auto middle = current_.begin() + static_cast<std::ptrdiff_t>(end);
+    std::partial_sort(first, middle, current_.end(), [&](const KeyedFace& a, const KeyedFace& b) {
         for (int k = 0; k < 3; ++k) {
             if (a.first_corner[k] != b.first_corner[k])
                 return a.first_corner[k] < b.first_corner[k];
         }
-        return face_swept_before(mesh_, corners_in_sweep_order(mesh_, a.face),
-                                 corners_in_sweep_order(mesh_, b.face), a.face, b.face);
+        return face_swept_before(mesh_, a.corners, b.corners, a.face, b.face);
     });
 }
 

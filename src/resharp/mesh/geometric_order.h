@@ -74,9 +74,13 @@ inline bool face_swept_before(const Mesh& mesh, const std::array<Index, 3>& a,
 
 /// Faces handed out one by one in face_swept_before() order, skipping those a caller has taken
 /// meanwhile, without sorting them all: the faces are dealt into slabs of z by their first
-/// corner's z (a bucket pass), and a slab's faces still open when it is reached are sorted then.
-/// A region growing from each face handed out takes most faces above it before their slab comes,
-/// so few are ever sorted (std::sort of all of impeller's grown faces cost 156 M instructions).
+/// corner's z (a bucket pass), and a slab's faces still open when it is reached are ordered then,
+/// a few at a time: the first kFirstRun of them, then, of those still open after, twice as many,
+/// and so on. A region growing from each face handed out takes most faces above it before their
+/// slab comes, so few are ever sorted (std::sort of all of impeller's grown faces cost 156 M
+/// instructions); and a flat face across the grid's z planes puts all its faces in one slab,
+/// which the first of them, a seed, then takes (mech by OpenVDB: a slab of 89,078 faces, all
+/// sorted for one seed before the runs).
 class FacesInSweepOrder {
 public:
     /// Takes the faces to hand out (any order).
@@ -86,18 +90,26 @@ public:
     /// none is left. open must stay false for a face once it is false.
     template <typename Open>
     Index next(Open&& open) {
-        // Bound: each call moves the cursor past each face at most once over all calls.
+        // Bound: each call moves the cursor past each face at most once over all calls, and a
+        // slab is ordered in at most log2 of its faces runs.
         while (true) {
-            while (cursor_ < current_.size()) {
+            while (cursor_ < ordered_end_) {
                 const Index f = current_[cursor_++].face;
                 if (open(f)) return f;
             }
-            if (slab_ + 1 >= slab_start_.size()) return kNoIndex;
-            take_slab(open);
+            if (cursor_ < current_.size()) {
+                order_next_run(open);
+            } else if (slab_ + 1 < slab_start_.size()) {
+                take_slab(open);
+            } else {
+                return kNoIndex;
+            }
         }
     }
 
 private:
+    static constexpr std::size_t kFirstRun = 16;
+
     template <typename Open>
     void take_slab(Open& open) {
         current_.clear();
@@ -105,24 +117,41 @@ private:
             if (open(by_slab_[i])) current_.push_back(keyed(by_slab_[i]));
         }
         ++slab_;
-        sort_current();
-        cursor_ = 0;
+        cursor_ = ordered_end_ = 0;
+        run_ = kFirstRun;
     }
-    /// A face with the position of its first corner, (z, y, x): most comparisons end there,
-    /// without reading the mesh again.
+    /// Drops the faces past the cursor that are no longer open, then puts the first run_ of the
+    /// rest in order, and doubles run_.
+    template <typename Open>
+    void order_next_run(Open& open) {
+        const auto rest = current_.begin() + static_cast<std::ptrdiff_t>(cursor_);
+        current_.erase(
+            std::remove_if(rest, current_.end(), [&](const KeyedFace& k) { return !open(k.face); }),
+            current_.end());
+        ordered_end_ = std::min(current_.size(), cursor_ + run_);
+        order_first(ordered_end_);
+        run_ *= 2;
+    }
+    /// A face with its corners_in_sweep_order() and the position of the first, (z, y, x): most
+    /// comparisons end at that position, and the rest (faces sharing their first corner, about
+    /// two per vertex) go on to the corners kept, without sorting them again.
     struct KeyedFace {
         std::array<double, 3> first_corner;
+        std::array<Index, 3> corners;
         Index face;
     };
     KeyedFace keyed(Index f) const;
-    void sort_current();
+    /// Puts current_[cursor_, end) in order, the least of current_[cursor_, ...) first.
+    void order_first(std::size_t end);
 
     const Mesh& mesh_;
     std::vector<Index> by_slab_;           // the faces, slab after slab
     std::vector<std::size_t> slab_start_;  // slab s is by_slab_[slab_start_[s], slab_start_[s + 1])
     std::size_t slab_ = 0;                 // the next slab to take
-    std::vector<KeyedFace> current_;       // the open faces of the slab taken last, sorted
-    std::size_t cursor_ = 0;
+    std::vector<KeyedFace> current_;  // the slab taken last: its faces open when taken or ordered
+    std::size_t cursor_ = 0;          // current_[0, cursor_) are handed out
+    std::size_t ordered_end_ = 0;     // current_[cursor_, ordered_end_) are in order, the least
+    std::size_t run_ = kFirstRun;     // how many to order next
 };
 
 }  // namespace resharp
