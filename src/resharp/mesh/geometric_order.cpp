@@ -47,16 +47,11 @@ FacesInSweepOrder::KeyedFace FacesInSweepOrder::keyed(Index f) const {
     return {{p.z(), p.y(), p.x()}, corners, f};
 }
 
-void FacesInSweepOrder::order_first(std::size_t end) {
-    const auto first = current_.begin() + static_cast<std::ptrdiff_t>(cursor_);
-    const auto middle = current_.begin() + static_cast<std::ptrdiff_t>(end);
-    std::partial_sort(first, middle, current_.end(), [&](const KeyedFace& a, const KeyedFace& b) {
-        for (int k = 0; k < 3; ++k) {
-            if (a.first_corner[k] != b.first_corner[k])
-                return a.first_corner[k] < b.first_corner[k];
-        }
-        return face_swept_before(mesh_, a.corners, b.corners, a.face, b.face);
-    });
+bool FacesInSweepOrder::before(const KeyedFace& a, const KeyedFace& b) const {
+    for (int k = 0; k < 3; ++k) {
+        if (a.first_corner[k] != b.first_corner[k]) return a.first_corner[k] < b.first_corner[k];
+    }
+    return face_swept_before(mesh_, a.corners, b.corners, a.face, b.face);
 }
 
 }  // namespace resharp

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -74,13 +75,14 @@ inline bool face_swept_before(const Mesh& mesh, const std::array<Index, 3>& a,
 
 /// Faces handed out one by one in face_swept_before() order, skipping those a caller has taken
 /// meanwhile, without sorting them all: the faces are dealt into slabs of z by their first
-/// corner's z (a bucket pass), and a slab's faces still open when it is reached are ordered then,
-/// a few at a time: the first kFirstRun of them, then, of those still open after, twice as many,
-/// and so on. A region growing from each face handed out takes most faces above it before their
-/// slab comes, so few are ever sorted (std::sort of all of impeller's grown faces cost 156 M
-/// instructions); and a flat face across the grid's z planes puts all its faces in one slab,
-/// which the first of them, a seed, then takes (mech by OpenVDB: a slab of 89,078 faces, all
-/// sorted for one seed before the runs).
+/// corner's z (a bucket pass), and a slab's faces are ordered a run at a time, when the last run
+/// is handed out: the least kFirstRun of its faces still open and after that run, then twice as
+/// many, and so on. A region growing from each face handed out takes most faces above it before
+/// their slab comes, so few are ever sorted (std::sort of all of impeller's grown faces cost
+/// 156 M instructions); and a flat face across the grid's z planes puts all its faces in one
+/// slab, which its first face, a seed, then takes: a run keeps only its own faces (mech by
+/// OpenVDB, a slab of 89,078 faces: sorted whole for one seed, and then kept whole, it cost
+/// 5.7 ms of the regrowth's 14).
 class FacesInSweepOrder {
 public:
     /// Takes the faces to hand out (any order).
@@ -90,17 +92,21 @@ public:
     /// none is left. open must stay false for a face once it is false.
     template <typename Open>
     Index next(Open&& open) {
-        // Bound: each call moves the cursor past each face at most once over all calls, and a
-        // slab is ordered in at most log2 of its faces runs.
+        // Bound: each call moves the cursor past each face at most once over all calls; a slab
+        // of n faces takes at most log2(n / kFirstRun + 1) + 1 runs, each a pass over it.
         while (true) {
-            while (cursor_ < ordered_end_) {
-                const Index f = current_[cursor_++].face;
+            while (cursor_ < run_faces_.size()) {
+                const Index f = run_faces_[cursor_++].face;
                 if (open(f)) return f;
             }
-            if (cursor_ < current_.size()) {
+            if (slab_has_more_) {
                 order_next_run(open);
             } else if (slab_ + 1 < slab_start_.size()) {
-                take_slab(open);
+                ++slab_;
+                run_faces_.clear();
+                cursor_ = 0;
+                run_ = kFirstRun;
+                slab_has_more_ = true;
             } else {
                 return kNoIndex;
             }
@@ -110,48 +116,55 @@ public:
 private:
     static constexpr std::size_t kFirstRun = 16;
 
-    template <typename Open>
-    void take_slab(Open& open) {
-        current_.clear();
-        for (std::size_t i = slab_start_[slab_]; i < slab_start_[slab_ + 1]; ++i) {
-            if (open(by_slab_[i])) current_.push_back(keyed(by_slab_[i]));
-        }
-        ++slab_;
-        cursor_ = ordered_end_ = 0;
-        run_ = kFirstRun;
-    }
-    /// Drops the faces past the cursor that are no longer open, then puts the first run_ of the
-    /// rest in order, and doubles run_.
-    template <typename Open>
-    void order_next_run(Open& open) {
-        const auto rest = current_.begin() + static_cast<std::ptrdiff_t>(cursor_);
-        current_.erase(
-            std::remove_if(rest, current_.end(), [&](const KeyedFace& k) { return !open(k.face); }),
-            current_.end());
-        ordered_end_ = std::min(current_.size(), cursor_ + run_);
-        order_first(ordered_end_);
-        run_ *= 2;
-    }
     /// A face with its corners_in_sweep_order() and the position of the first, (z, y, x): most
     /// comparisons end at that position, and the rest (faces sharing their first corner, about
-    /// two per vertex) go on to the corners kept, without sorting them again.
+    /// two per vertex) go on to the corners kept.
     struct KeyedFace {
         std::array<double, 3> first_corner;
         std::array<Index, 3> corners;
         Index face;
     };
     KeyedFace keyed(Index f) const;
-    /// Puts current_[cursor_, end) in order, the least of current_[cursor_, ...) first.
-    void order_first(std::size_t end);
+    /// face_swept_before() of the two.
+    bool before(const KeyedFace& a, const KeyedFace& b) const;
+
+    /// Replaces the run handed out by the least run_ faces of the slab (slab_ - 1) that are open
+    /// and come after it, in order, and doubles run_. Bound: one pass over the slab.
+    template <typename Open>
+    void order_next_run(Open& open) {
+        const std::optional<KeyedFace> after =
+            run_faces_.empty() ? std::nullopt : std::optional(run_faces_.back());
+        const auto later = [&](const KeyedFace& a, const KeyedFace& b) { return before(a, b); };
+        // A heap whose front is the latest of the least run_ met so far.
+        run_faces_.clear();
+        for (std::size_t i = slab_start_[slab_ - 1]; i < slab_start_[slab_]; ++i) {
+            const Index f = by_slab_[i];
+            if (!open(f)) continue;
+            const KeyedFace k = keyed(f);
+            if (after && !before(*after, k)) continue;
+            if (run_faces_.size() == run_) {
+                if (!before(k, run_faces_.front())) continue;
+                std::pop_heap(run_faces_.begin(), run_faces_.end(), later);
+                run_faces_.back() = k;
+            } else {
+                run_faces_.push_back(k);
+            }
+            std::push_heap(run_faces_.begin(), run_faces_.end(), later);
+        }
+        std::sort_heap(run_faces_.begin(), run_faces_.end(), later);
+        slab_has_more_ = run_faces_.size() == run_;
+        cursor_ = 0;
+        run_ *= 2;
+    }
 
     const Mesh& mesh_;
     std::vector<Index> by_slab_;           // the faces, slab after slab
     std::vector<std::size_t> slab_start_;  // slab s is by_slab_[slab_start_[s], slab_start_[s + 1])
-    std::size_t slab_ = 0;                 // the next slab to take
-    std::vector<KeyedFace> current_;  // the slab taken last: its faces open when taken or ordered
-    std::size_t cursor_ = 0;          // current_[0, cursor_) are handed out
-    std::size_t ordered_end_ = 0;     // current_[cursor_, ordered_end_) are in order, the least
-    std::size_t run_ = kFirstRun;     // how many to order next
+    std::size_t slab_ = 0;                 // slabs [0, slab_) are taken; slab_ - 1 is handed out
+    bool slab_has_more_ = false;        // whether slab_ - 1 may hold faces after the run handed out
+    std::vector<KeyedFace> run_faces_;  // the run handed out, in order
+    std::size_t cursor_ = 0;            // run_faces_[0, cursor_) are handed out
+    std::size_t run_ = kFirstRun;       // how many the next run of the slab takes
 };
 
 }  // namespace resharp
