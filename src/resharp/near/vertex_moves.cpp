@@ -312,6 +312,9 @@ public:
         if (!own_fitted_farther) onto.point = point_on_own_side(v, around, scratch);
         if (!own_fitted_farther && !onto.point && rule_.placement == VertexPlacement::Near)
             onto = point_on_other_side(v, around, scratch);
+        if (const std::optional<Vec3> corner =
+                into_curved_concave_corner(v, around, onto.point, scratch))
+            return on_junction(corner);
         return {onto.point, point_on_sides_junction(v, around), false, onto.patch};
     }
 
@@ -709,9 +712,28 @@ private:
     /// nearby_side() gives it; the curved side's surface curved_side()'s.
     std::optional<Vec3> point_on_curved_junction(Index v, std::span<const Index> patches,
                                                  const Fits& fits, Scratch& scratch) const {
-        const double h = rule_.grid.pitch;
+        const std::optional<SideSurfaces> surfaces = side_surfaces(v, patches, fits, scratch);
+        return surfaces ? point_on_surfaces_junction(v, *surfaces) : std::nullopt;
+    }
+
+    /// The surfaces of two or three sides for point_on_curved_junction(), sides[i] for
+    /// patches[i].
+    struct SideSurfaces {
+        std::array<SideSurface, 3> side;
+        std::size_t count = 0;
+        /// The curved side's surface over its vertices nearby (bent_surface()), where it has one
+        /// and side[] holds the one curved_side() fitted beyond the rows beside a flat side.
+        std::optional<SideSurface> curved_nearby;
+        std::span<const SideSurface> all() const { return std::span(side.data(), count); }
+    };
+
+    /// Each side as nearby_side() gives it, the curved one as curved_side() does; none where two
+    /// are curved or the curved one has no surface.
+    std::optional<SideSurfaces> side_surfaces(Index v, std::span<const Index> patches,
+                                              const Fits& fits, Scratch& scratch) const {
         const Vec3& x = current_.mesh.positions[v];
-        std::array<SideSurface, 3> surfaces;
+        SideSurfaces surfaces;
+        surfaces.count = patches.size();
         std::array<const Plane*, 3> flat_planes{};
         std::size_t flat_count = 0;
         std::size_t curved = patches.size();
@@ -719,8 +741,8 @@ private:
         for (std::size_t i = 0; i < patches.size(); ++i) {
             const NearbySide side = nearby_side(patches[i], fits[i], x, scratch);
             if (side.flat) {
-                surfaces[i].plane = side.fit->plane;
-                flat_planes[flat_count++] = &surfaces[i].plane;
+                surfaces.side[i].plane = side.fit->plane;
+                flat_planes[flat_count++] = &surfaces.side[i].plane;
                 continue;
             }
             if (curved < patches.size()) return std::nullopt;
@@ -732,17 +754,26 @@ private:
             const std::optional<SideSurface> bent = curved_side(
                 v, patches[curved], x, std::span(flat_planes.data(), flat_count), nearby, scratch);
             if (!bent) return std::nullopt;
-            surfaces[curved] = *bent;
+            surfaces.side[curved] = *bent;
+            surfaces.curved_nearby = nearby;
         }
+        return surfaces;
+    }
+
+    /// point_on_curved_junction() on the sides' surfaces.
+    std::optional<Vec3> point_on_surfaces_junction(Index v, const SideSurfaces& surfaces) const {
+        const double h = rule_.grid.pitch;
+        const Vec3& x = current_.mesh.positions[v];
+        const std::span<const SideSurface> sides = surfaces.all();
         const JunctionSolverOptions solver{.pitch = h};
         const std::optional<Vec3> y =
-            patches.size() == 2 ? edge_junction(surfaces[0], surfaces[1], x, x, solver)
-                                : corner_junction(surfaces[0], surfaces[1], surfaces[2], x, solver);
+            sides.size() == 2 ? edge_junction(sides[0], sides[1], x, x, solver)
+                              : corner_junction(sides[0], sides[1], sides[2], x, solver);
         if (!y) return std::nullopt;
         std::array<Vec3, 3> normals;
-        for (std::size_t i = 0; i < patches.size(); ++i)
-            normals[i] = surfaces[i].evaluate(*y).gradient.normalized();
-        if (!part_sharply(std::span(normals.data(), patches.size()))) return std::nullopt;
+        for (std::size_t i = 0; i < sides.size(); ++i)
+            normals[i] = sides[i].evaluate(*y).gradient.normalized();
+        if (!part_sharply(std::span(normals.data(), sides.size()))) return std::nullopt;
         const Cell cell = cell_of(input_[v]);
         // Beyond its cell only where no side's surface crosses the cell, the vertex lies in
         // front of every side (in the empty corner of a concave edge, where OpenVDB's bevel puts
@@ -750,12 +781,54 @@ private:
         // one of a curved face the sides' surfaces miss: on the pocketed block by surface nets,
         // a vertex of the hole's wall 1.1 pitches below the top would have gone to the rim's
         // junction of a quadric 0.2 mm inside the wall, out of its cell.
-        const auto sides = std::span(surfaces.data(), patches.size());
         const bool held = std::any_of(sides.begin(), sides.end(), [&](const SideSurface& s) {
             return s.crosses(cell) || s.evaluate(x).value <= 0.0;
         });
         if (held || !cell.with_neighbours(h).holds(*y)) return cell.clamp(*y);
         return y;
+    }
+
+    /// Near, a band vertex of a patch beside one other, one of them curved, in the empty corner of
+    /// the concave edge between them where OpenVDB displaces the rows beside the edge: the vertex
+    /// lies in front of both sides' surfaces by more than kCurvedJunctionScatter (the curved one
+    /// fitted beyond those rows, curved_side()) but on or behind the curved side's surface fitted
+    /// to its vertices nearby (the displaced rows drag that fit out to it), and the point it would
+    /// take (`taken`: on its own side's plane, or another side's) lies off its own side's surface
+    /// by more than the trusted scatter, or it has none. Its own plane, fitted over the displaced
+    /// rows too, tilts away from the surface. Such a vertex goes to the sides' junction as a
+    /// vertex between patches does (point_on_curved_junction()): on cone_part by OpenVDB, aligned
+    /// at 100 cells, the top's edge on the frustum, a concave circle of radius 14 mm at pitch 0.4,
+    /// its vertex at (r, z) = (14.092, 8.108), 0.11 and 0.13 mm in front of the faces, went to
+    /// (14.106, 8.119) on the plane tilted 5 degrees; now it goes to (13.997, 8.000). Surface
+    /// nets' rows there lie on the faces, and the surface fitted beyond them may not (on a boss of
+    /// 6.3 pitches' radius it meets the plate 0.3 mm inside the boss): a vertex in front of the
+    /// surface fitted nearby stays with its plane's point.
+    std::optional<Vec3> into_curved_concave_corner(Index v, std::span<const Side> sides,
+                                                   const std::optional<Vec3>& taken,
+                                                   Scratch& scratch) const {
+        if (rule_.placement != VertexPlacement::Near || sides.size() != 2) return std::nullopt;
+        const std::array<PlaneFit, 2> planes{sides[0].fit, sides[1].fit};
+        if (flat_enough(planes)) return std::nullopt;
+        const std::array<Index, kMaxSides> patches{sides[0].patch, sides[1].patch};
+        const Fits fits{sides[0].fit, sides[1].fit};
+        const std::optional<SideSurfaces> surfaces =
+            side_surfaces(v, std::span(patches.data(), 2), fits, scratch);
+        if (!surfaces || !surfaces->curved_nearby) return std::nullopt;
+        const double h = rule_.grid.pitch;
+        const auto distance = [](const SideSurface& s, const Vec3& p) {
+            const SurfaceValue at = s.evaluate(p);
+            return at.value / std::max(at.gradient.norm(), 1e-300);
+        };
+        if (taken && std::abs(distance(surfaces->side[0], *taken)) <= options_.max_scatter_near * h)
+            return std::nullopt;
+        const Vec3& x = current_.mesh.positions[v];
+        const double scatter = kCurvedJunctionScatter * h;
+        const std::span<const SideSurface> both = surfaces->all();
+        const bool in_corner =
+            std::all_of(both.begin(), both.end(),
+                        [&](const SideSurface& s) { return distance(s, x) > scatter; }) &&
+            distance(*surfaces->curved_nearby, x) <= scatter;
+        return in_corner ? point_on_surfaces_junction(v, *surfaces) : std::nullopt;
     }
 
     /// The sides of v's patches: its own first; for a band vertex the others around it too, and
