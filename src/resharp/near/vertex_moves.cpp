@@ -791,18 +791,19 @@ private:
     /// Near, a band vertex of a patch beside one other, one of them curved, in the empty corner of
     /// the concave edge between them where OpenVDB displaces the rows beside the edge: the vertex
     /// lies in front of both sides' surfaces by more than kCurvedJunctionScatter (the curved one
-    /// fitted beyond those rows, curved_side()) but on or behind the curved side's surface fitted
-    /// to its vertices nearby (the displaced rows drag that fit out to it), and the point it would
-    /// take (`taken`: on its own side's plane, or another side's) lies off its own side's surface
-    /// by more than the trusted scatter, or it has none. Its own plane, fitted over the displaced
-    /// rows too, tilts away from the surface. Such a vertex goes to the sides' junction as a
-    /// vertex between patches does (point_on_curved_junction()): on cone_part by OpenVDB, aligned
-    /// at 100 cells, the top's edge on the frustum, a concave circle of radius 14 mm at pitch 0.4,
-    /// its vertex at (r, z) = (14.092, 8.108), 0.11 and 0.13 mm in front of the faces, went to
-    /// (14.106, 8.119) on the plane tilted 5 degrees; now it goes to (13.997, 8.000). Surface
-    /// nets' rows there lie on the faces, and the surface fitted beyond them may not (on a boss of
-    /// 6.3 pitches' radius it meets the plate 0.3 mm inside the boss): a vertex in front of the
-    /// surface fitted nearby stays with its plane's point.
+    /// fitted beyond those rows, curved_side()), but behind the curved side's surface fitted to
+    /// its vertices nearby or in front of it by at most the trusted scatter (the displaced rows
+    /// drag that fit out to it); and the point it would take (`taken`: on its own side's plane, or
+    /// another side's) lies off its own side's surface by more than the trusted scatter, or it has
+    /// none. Its own plane, fitted over the displaced rows too, tilts away from the surface. Such
+    /// a vertex goes to the sides' junction as a vertex between patches does
+    /// (point_on_curved_junction()): on cone_part by OpenVDB, aligned at 100 cells, the top's edge
+    /// on the frustum, a concave circle of radius 14 mm at pitch 0.4, its vertex at (r, z) =
+    /// (14.092, 8.108), 0.11 and 0.13 mm in front of the faces, went to (14.106, 8.119) on the
+    /// plane tilted 5 degrees; now it goes to (13.997, 8.000). Surface nets' rows there lie on the
+    /// faces, and the surface fitted beyond them may not (on a boss of 6.3 pitches' radius it met
+    /// the plate 0.3 mm inside the boss); the vertex there lies 0.13 pitches in front of the
+    /// surface fitted nearby, and keeps its plane's point.
     std::optional<Vec3> into_curved_concave_corner(Index v, std::span<const Side> sides,
                                                    const std::optional<Vec3>& taken,
                                                    Scratch& scratch) const {
@@ -827,7 +828,7 @@ private:
         const bool in_corner =
             std::all_of(both.begin(), both.end(),
                         [&](const SideSurface& s) { return distance(s, x) > scatter; }) &&
-            distance(*surfaces->curved_nearby, x) <= scatter;
+            distance(*surfaces->curved_nearby, x) <= options_.max_scatter_near * h;
         return in_corner ? point_on_surfaces_junction(v, *surfaces) : std::nullopt;
     }
 
