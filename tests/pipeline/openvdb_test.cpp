@@ -369,18 +369,50 @@ TEST(OpenVdbMesher, TheTurnedHexagonalPrismsPocketRowsGoOntoAFace) {
     EXPECT_LT(off_output, 222u);
 }
 
-/// A boss of radius 3.3 mm (6.6 pitches) standing 2.9 mm on a plate, off the grid planes: the
-/// circle where it meets the plate's top (z = 2.41 around (6.13, 5.97)) is a concave edge
-/// between a cylinder and a plane. Sampled by the simulator at kPitch / kFine.
-Mesh boss_on_a_plate() {
+/// A solid standing on a plate off the grid planes (the box [0.37, 12.21] x [0.29, 11.83] x
+/// [0.41, 2.41]), given as a CSG primitive about the axis x = 6.13, y = 5.97: the circle where it
+/// meets the plate's top (z = 2.41) is a concave edge between a curved face and a plane. Sampled
+/// by the simulator at kPitch / kFine.
+Mesh standing_on_a_plate(const std::string& primitive) {
     const sim::CsgSolid solid(sim::parse_csg(R"({"solid": {"union": [
         {"box": {"min": [0.37, 0.29, 0.41], "max": [12.21, 11.83, 2.41]}},
-        {"cylinder": {"from": [6.13, 5.97, 1.0], "to": [6.13, 5.97, 5.31], "radius": 3.3}}
+        )" + primitive + R"(
     ]}})",
-                                             "boss"));
+                                             "standing on a plate"));
     const sim::DexelGrid grid =
         sim::sample_solid(sim::phased_grid(solid.bounds(), kPitch / kFine, 0.0), solid);
     return sim::mesh_dexels(grid, {}).mesh;
+}
+
+/// A boss of radius 3.3 mm (6.6 pitches) standing 2.9 mm on the plate: a cylinder.
+Mesh boss_on_a_plate() {
+    return standing_on_a_plate(
+        R"({"cylinder": {"from": [6.13, 5.97, 1.0], "to": [6.13, 5.97, 5.31], "radius": 3.3}})");
+}
+
+/// A frustum on the plate, its cone 30 degrees off the axis (radius 4 mm where it meets the
+/// plate's top, 2 mm at its top, z = 5.91), as cone_part's of the CAD corpus stands on its base.
+Mesh frustum_on_a_plate() {
+    return standing_on_a_plate(R"({"cone": {"from": [6.13, 5.97, 1.0], "to": [6.13, 5.97, 5.91],
+                                            "radius_from": 4.806, "radius_to": 2.0}})");
+}
+
+/// Restores `fine` meshed by OpenVDB and expects the share of the concave circle of `radius`
+/// where it stands on the plate within 0.15 of a pitch of a crease below 0.05 before and above
+/// `at_least` after, with no harm.
+void expect_circle_on_the_plate_back(const Mesh& fine, double radius, double at_least) {
+    const Mesh input = extras::openvdb_dual_mesh(fine, kPitch);
+    const RestoreOptions options;
+    const RestoreResult r = restore(input, options);
+    std::vector<Vec3> circle;
+    for (int i = 0; i <= 720; ++i) {
+        const double t = i * std::numbers::pi / 360.0;
+        circle.push_back(Vec3(6.13 + radius * std::cos(t), 5.97 + radius * std::sin(t), 2.41));
+    }
+    const double tolerance = 0.15 * kPitch;
+    EXPECT_LT(share_beside_a_crease(input, circle, tolerance), 0.05);
+    EXPECT_GT(share_beside_a_crease(r.mesh, circle, tolerance), at_least);
+    test::expect_no_harm(input, r, options);
 }
 
 // Along a concave edge between a curved face and a flat one OpenVDB displaces the two rows
@@ -391,33 +423,7 @@ Mesh boss_on_a_plate() {
 // into the cells around where no surface crosses their own, they bring back a quarter of it at
 // least (36 % when this test was written; the rows beside it stay where OpenVDB put them).
 TEST(OpenVdbMesher, ABossesConcaveCircleComesBackOnTheCircle) {
-    const Mesh input = extras::openvdb_dual_mesh(boss_on_a_plate(), kPitch);
-    const RestoreOptions options;
-    const RestoreResult r = restore(input, options);
-    std::vector<Vec3> circle;
-    for (int i = 0; i <= 720; ++i) {
-        const double t = i * std::numbers::pi / 360.0;
-        circle.push_back(Vec3(6.13 + 3.3 * std::cos(t), 5.97 + 3.3 * std::sin(t), 2.41));
-    }
-    const double tolerance = 0.15 * kPitch;
-    EXPECT_LT(share_beside_a_crease(input, circle, tolerance), 0.05);
-    EXPECT_GT(share_beside_a_crease(r.mesh, circle, tolerance), 0.25);
-    test::expect_no_harm(input, r, options);
-}
-
-/// A frustum on the plate of boss_on_a_plate(), its cone 30 degrees off the axis (radius 4 mm
-/// where it meets the plate's top, z = 2.41, 2 mm at its top, z = 5.91), as cone_part's of the CAD
-/// corpus stands on its base. Sampled by the simulator at kPitch / kFine.
-Mesh frustum_on_a_plate() {
-    const sim::CsgSolid solid(sim::parse_csg(R"({"solid": {"union": [
-        {"box": {"min": [0.37, 0.29, 0.41], "max": [12.21, 11.83, 2.41]}},
-        {"cone": {"from": [6.13, 5.97, 1.0], "to": [6.13, 5.97, 5.91],
-                  "radius_from": 4.806, "radius_to": 2.0}}
-    ]}})",
-                                             "frustum"));
-    const sim::DexelGrid grid =
-        sim::sample_solid(sim::phased_grid(solid.bounds(), kPitch / kFine, 0.0), solid);
-    return sim::mesh_dexels(grid, {}).mesh;
+    expect_circle_on_the_plate_back(boss_on_a_plate(), 3.3, 0.25);
 }
 
 // Where a frustum meets a plate, OpenVDB puts the vertex of the cell the concave circle crosses
@@ -428,18 +434,7 @@ Mesh frustum_on_a_plate() {
 // circle within 0.15 of a pitch of a crease went 0.04 -> 0.32 (the rows beside it stay where
 // OpenVDB put them).
 TEST(OpenVdbMesher, AFrustumsConcaveCircleComesBackOnTheCircle) {
-    const Mesh input = extras::openvdb_dual_mesh(frustum_on_a_plate(), kPitch);
-    const RestoreOptions options;
-    const RestoreResult r = restore(input, options);
-    std::vector<Vec3> circle;
-    for (int i = 0; i <= 720; ++i) {
-        const double t = i * std::numbers::pi / 360.0;
-        circle.push_back(Vec3(6.13 + 4.0 * std::cos(t), 5.97 + 4.0 * std::sin(t), 2.41));
-    }
-    const double tolerance = 0.15 * kPitch;
-    EXPECT_LT(share_beside_a_crease(input, circle, tolerance), 0.05);
-    EXPECT_GT(share_beside_a_crease(r.mesh, circle, tolerance), 0.2);
-    test::expect_no_harm(input, r, options);
+    expect_circle_on_the_plate_back(frustum_on_a_plate(), 4.0, 0.2);
 }
 
 // A face ringing a curved one (the plate around the boss) has its centroid far from the edge
