@@ -712,52 +712,59 @@ private:
     /// nearby_side() gives it; the curved side's surface curved_side()'s.
     std::optional<Vec3> point_on_curved_junction(Index v, std::span<const Index> patches,
                                                  const Fits& fits, Scratch& scratch) const {
-        const std::optional<SideSurfaces> surfaces = side_surfaces(v, patches, fits, scratch);
-        return surfaces ? point_on_surfaces_junction(v, *surfaces) : std::nullopt;
+        std::optional<SideSurfaces> surfaces = nearby_surfaces(v, patches, fits, scratch);
+        if (!surfaces || !fit_curved_side(v, patches, *surfaces, scratch)) return std::nullopt;
+        return point_on_surfaces_junction(v, *surfaces);
     }
 
-    /// The surfaces of two or three sides for point_on_curved_junction(), sides[i] for
+    /// The surfaces of two or three sides for point_on_curved_junction(), side[i] for
     /// patches[i].
     struct SideSurfaces {
         std::array<SideSurface, 3> side;
         std::size_t count = 0;
-        /// The curved side's surface over its vertices nearby (bent_surface()), where it has one
-        /// and side[] holds the one curved_side() fitted beyond the rows beside a flat side.
+        std::size_t curved = 3;  ///< which side is curved (count where none is)
+        /// The curved side's surface over its vertices nearby (bent_surface()), where it has one.
         std::optional<SideSurface> curved_nearby;
         std::span<const SideSurface> all() const { return std::span(side.data(), count); }
     };
 
-    /// Each side as nearby_side() gives it, the curved one as curved_side() does; none where two
-    /// are curved or the curved one has no surface.
-    std::optional<SideSurfaces> side_surfaces(Index v, std::span<const Index> patches,
-                                              const Fits& fits, Scratch& scratch) const {
+    /// Each side as nearby_side() gives it: a flat side's plane in side[], the curved side's
+    /// surface over its vertices nearby in curved_nearby (and those vertices in
+    /// scratch.near_rows). None where two are curved.
+    std::optional<SideSurfaces> nearby_surfaces(Index v, std::span<const Index> patches,
+                                                const Fits& fits, Scratch& scratch) const {
         const Vec3& x = current_.mesh.positions[v];
         SideSurfaces surfaces;
-        surfaces.count = patches.size();
-        std::array<const Plane*, 3> flat_planes{};
-        std::size_t flat_count = 0;
-        std::size_t curved = patches.size();
-        std::optional<SideSurface> nearby;  // the curved side's, over its vertices nearby
+        surfaces.count = surfaces.curved = patches.size();
         for (std::size_t i = 0; i < patches.size(); ++i) {
             const NearbySide side = nearby_side(patches[i], fits[i], x, scratch);
             if (side.flat) {
                 surfaces.side[i].plane = side.fit->plane;
-                flat_planes[flat_count++] = &surfaces.side[i].plane;
                 continue;
             }
-            if (curved < patches.size()) return std::nullopt;
-            curved = i;
-            nearby = bent_surface(side.fit, x, scratch.points);
+            if (surfaces.curved < patches.size()) return std::nullopt;
+            surfaces.curved = i;
+            surfaces.curved_nearby = bent_surface(side.fit, x, scratch.points);
             scratch.near_rows.assign(scratch.points.begin(), scratch.points.end());
         }
-        if (curved < patches.size()) {
-            const std::optional<SideSurface> bent = curved_side(
-                v, patches[curved], x, std::span(flat_planes.data(), flat_count), nearby, scratch);
-            if (!bent) return std::nullopt;
-            surfaces.side[curved] = *bent;
-            surfaces.curved_nearby = nearby;
-        }
         return surfaces;
+    }
+
+    /// The curved side's surface as curved_side() gives it, next to the flat sides' planes, into
+    /// side[]; false where it has none. (Nothing to do where every side is flat.)
+    bool fit_curved_side(Index v, std::span<const Index> patches, SideSurfaces& surfaces,
+                         Scratch& scratch) const {
+        if (surfaces.curved == surfaces.count) return true;
+        std::array<const Plane*, 3> flat{};
+        std::size_t flat_count = 0;
+        for (std::size_t i = 0; i < surfaces.count; ++i) {
+            if (i != surfaces.curved) flat[flat_count++] = &surfaces.side[i].plane;
+        }
+        const std::optional<SideSurface> bent =
+            curved_side(v, patches[surfaces.curved], current_.mesh.positions[v],
+                        std::span(flat.data(), flat_count), surfaces.curved_nearby, scratch);
+        if (bent) surfaces.side[surfaces.curved] = *bent;
+        return bent.has_value();
     }
 
     /// point_on_curved_junction() on the sides' surfaces.
@@ -812,24 +819,31 @@ private:
         if (flat_enough(planes)) return std::nullopt;
         const std::array<Index, kMaxSides> patches{sides[0].patch, sides[1].patch};
         const Fits fits{sides[0].fit, sides[1].fit};
-        const std::optional<SideSurfaces> surfaces =
-            side_surfaces(v, std::span(patches.data(), 2), fits, scratch);
+        // The surfaces fitted nearby first: most band vertices fail the tests on them, and the
+        // curved side fitted farther out (curved_side()) costs a wider gathering and fit.
+        std::optional<SideSurfaces> surfaces =
+            nearby_surfaces(v, std::span(patches.data(), 2), fits, scratch);
         if (!surfaces || !surfaces->curved_nearby) return std::nullopt;
         const double h = rule_.grid.pitch;
+        const double scatter = kCurvedJunctionScatter * h;
+        const Vec3& x = current_.mesh.positions[v];
         const auto distance = [](const SideSurface& s, const Vec3& p) {
             const SurfaceValue at = s.evaluate(p);
             return at.value / std::max(at.gradient.norm(), 1e-300);
         };
-        if (taken && std::abs(distance(surfaces->side[0], *taken)) <= options_.max_scatter_near * h)
+        const double trusted = options_.max_scatter_near * h;
+        const auto taken_on_own = [&] {
+            return taken && std::abs(distance(surfaces->side[0], *taken)) <= trusted;
+        };
+        const bool own_curved = surfaces->curved == 0;
+        if (distance(surfaces->side[1 - surfaces->curved], x) <= scatter ||
+            distance(*surfaces->curved_nearby, x) > trusted || (!own_curved && taken_on_own()))
             return std::nullopt;
-        const Vec3& x = current_.mesh.positions[v];
-        const double scatter = kCurvedJunctionScatter * h;
-        const std::span<const SideSurface> both = surfaces->all();
-        const bool in_corner =
-            std::all_of(both.begin(), both.end(),
-                        [&](const SideSurface& s) { return distance(s, x) > scatter; }) &&
-            distance(*surfaces->curved_nearby, x) <= options_.max_scatter_near * h;
-        return in_corner ? point_on_surfaces_junction(v, *surfaces) : std::nullopt;
+        if (!fit_curved_side(v, std::span(patches.data(), 2), *surfaces, scratch) ||
+            distance(surfaces->side[surfaces->curved], x) <= scatter ||
+            (own_curved && taken_on_own()))
+            return std::nullopt;
+        return point_on_surfaces_junction(v, *surfaces);
     }
 
     /// The sides of v's patches: its own first; for a band vertex the others around it too, and
