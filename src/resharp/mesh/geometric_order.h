@@ -134,7 +134,7 @@ private:
     void order_next_run(Open& open) {
         const std::optional<KeyedFace> after =
             run_faces_.empty() ? std::nullopt : std::optional(run_faces_.back());
-        const auto later = [&](const KeyedFace& a, const KeyedFace& b) { return before(a, b); };
+        const auto in_order = [&](const KeyedFace& a, const KeyedFace& b) { return before(a, b); };
         // A heap whose front is the latest of the least run_ met so far.
         run_faces_.clear();
         for (std::size_t i = slab_start_[slab_ - 1]; i < slab_start_[slab_]; ++i) {
@@ -144,14 +144,14 @@ private:
             if (after && !before(*after, k)) continue;
             if (run_faces_.size() == run_) {
                 if (!before(k, run_faces_.front())) continue;
-                std::pop_heap(run_faces_.begin(), run_faces_.end(), later);
+                std::pop_heap(run_faces_.begin(), run_faces_.end(), in_order);
                 run_faces_.back() = k;
             } else {
                 run_faces_.push_back(k);
             }
-            std::push_heap(run_faces_.begin(), run_faces_.end(), later);
+            std::push_heap(run_faces_.begin(), run_faces_.end(), in_order);
         }
-        std::sort_heap(run_faces_.begin(), run_faces_.end(), later);
+        std::sort_heap(run_faces_.begin(), run_faces_.end(), in_order);
         slab_has_more_ = run_faces_.size() == run_;
         cursor_ = 0;
         run_ *= 2;
