@@ -115,7 +115,13 @@ struct MoveRule {
 /// corner within that reach, else the two planes nearest it. A vertex of a flat face off the
 /// bands moves onto the face's plane within its cell (the cells around where it misses that) only
 /// where it lies in front of it (by at most half a pitch) and of another flat face within two
-/// pitches (the empty corner of a concave edge, where OpenVDB displaces a face's rows). A band
+/// pitches (the empty corner of a concave edge, where OpenVDB displaces a face's rows). A vertex
+/// off the bands on the border of two flat patches that lies behind both planes (a dual mesher's
+/// vertex at a convex edge no band marks) goes where they meet within its cell, as a vertex of
+/// no patch does. A band vertex of a patch beside one other, one of them curved, in the empty
+/// corner of their concave edge (in front of both surfaces, the curved one fitted beyond the
+/// rows OpenVDB displaces there, but not in front of the curved face's surface fitted nearby)
+/// whose own side's point lies off its surface goes where the surfaces meet, likewise. A band
 /// vertex of a patch that lies off its own plane goes instead onto where its sides' planes meet,
 /// where that crosses its cell and every face around it then lies on one side: its two other
 /// corners of one patch, or one of them on a junction too (the largest set of such vertices, which
