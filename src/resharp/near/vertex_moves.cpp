@@ -410,11 +410,7 @@ private:
             return std::nullopt;
         const std::optional<Junction> junction = sharp_junction(planes);
         if (!junction || turns_along(v, planes[0].plane, planes[1].plane)) return std::nullopt;
-        const auto project = [&](const Vec3& p) { return junction->projection(p); };
-        const Cell cell = cell_of(input_[v]);
-        const Vec3 y = cell.clamp(nearest_to_cell(x, project, cell));
-        if ((project(y) - y).norm() > tolerance) return std::nullopt;
-        return y;
+        return junction_in_cell(v, *junction);
     }
 
     /// Whether v has a patch and is one to move: near meshes move band vertices only (of the
@@ -560,12 +556,7 @@ private:
         for (std::size_t i = 0; i < sides.size(); ++i) planes[i] = sides[i].fit;
         const std::optional<Junction> junction =
             sharp_junction(std::span(planes.data(), sides.size()));
-        if (!junction) return std::nullopt;
-        const auto project = [&](const Vec3& p) { return junction->projection(p); };
-        const Cell cell = cell_of(input_[v]);
-        const Vec3 y = cell.clamp(nearest_to_cell(x, project, cell));
-        if ((project(y) - y).norm() > tolerance) return std::nullopt;
-        return y;
+        return junction ? junction_in_cell(v, *junction) : std::nullopt;
     }
 
     /// The points on every one of two or three planes (a line or a point): x goes to the
@@ -601,6 +592,17 @@ private:
         Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1> offsets_;
         Eigen::PartialPivLU<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>> gram_;
     };
+
+    /// The point of `junction` nearest v's current place within v's input cell; none where the
+    /// junction misses the cell (the cell's point nearest it lies off it by more than the
+    /// on-plane tolerance).
+    std::optional<Vec3> junction_in_cell(Index v, const Junction& junction) const {
+        const auto project = [&](const Vec3& p) { return junction.projection(p); };
+        const Cell cell = cell_of(input_[v]);
+        const Vec3 y = cell.clamp(nearest_to_cell(current_.mesh.positions[v], project, cell));
+        if ((project(y) - y).norm() > on_plane_tolerance()) return std::nullopt;
+        return y;
+    }
 
     /// Whether each plane's points scatter about it by at most the junction scatter.
     bool flat_enough(std::span<const PlaneFit> fits) const {
