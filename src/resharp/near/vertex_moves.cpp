@@ -48,8 +48,20 @@ constexpr double kAcrossAnAxisCosine = 0.98;
 /// 0.566 and frogface's 0.774 -> 0.663).
 constexpr double kSagShare = 0.5;
 constexpr double kMinSag = 0.03;
-/// Midpoint: how far short of its grid edge's ends a vertex stops, and how far beyond them a
-/// plane may meet the edge's line and still be taken for crossing it, in pitches (within_edge()).
+/// Midpoint: a curved face's vertices go onto the quadratic height fitted to them
+/// (point_on_bent_face()) only where they scatter about it by at most this many times what
+/// midpoints alone give (h^2 / 12 times the square of the normal's component along their grid
+/// edges, on average): more is a fold or an edge within the fit rings that no quadratic follows;
+/// ... and where it curves by at most this (in 1 / h): radii below 3 h are below what issue 13
+/// takes for a smooth surface, and a quadratic over a sharp edge of a few pitches' reach curves
+/// by about 0.6 tan(half its turn) / h.
+constexpr double kBentNoise = 2.0;
+constexpr double kBentMaxCurvature = 1.0 / 3.0;
+/// Midpoint: the most Newton steps along a grid edge onto a quadratic height (along_edge_onto()).
+constexpr int kEdgeNewtonSteps = 8;
+/// Midpoint: how far short of its grid edge's ends a vertex stops (on an edge along the
+/// surface's normal; farther on edges across it), and how far beyond them a plane may meet the
+/// edge's line and still be taken for crossing it, in pitches (within_edge()).
 constexpr double kEdgeEndMargin = 0.01;
 constexpr double kEdgeOvershoot = 0.25;
 /// Near: the most (root mean square, in pitches) a curved side's vertices may scatter about the
@@ -304,6 +316,7 @@ public:
                 return on_junction(edge);
             return {onto_flat_face(v, scratch)};
         }
+        if (const std::optional<Vec3> bent = point_on_bent_face(v, scratch)) return {bent};
         std::array<Side, kMaxSides> sides;
         bool own_fitted_farther = false;
         const std::size_t count = rule_.scope == FitScope::Patches
@@ -314,8 +327,7 @@ public:
         // A plane fitted farther out leads only onto a junction (patch_sides()).
         FacePoint onto;
         if (!own_fitted_farther) onto.point = point_on_own_side(v, around, scratch);
-        if (!own_fitted_farther && !onto.point && rule_.placement == VertexPlacement::Near)
-            onto = point_on_other_side(v, around, scratch);
+        if (!own_fitted_farther && !onto.point) onto = point_on_other_side(v, around, scratch);
         if (const std::optional<Vec3> corner =
                 into_curved_concave_corner(v, around, onto.point, scratch))
             return on_junction(corner);
@@ -507,12 +519,16 @@ private:
     }
 
     /// Midpoint: a vertex that segmentation left in a band with no patch of its own, among two
-    /// to four patches within the fit rings, each with a plane of its own as a whole
-    /// (whole_patch_planes()): where its grid edge meets the solid's boundary as those planes
-    /// make it, the point on one of them that bounds the solid next to the others (nearest its
-    /// place where more than one does, as on the edge line itself). The mesher put it on that
-    /// edge because the edge crosses the boundary there. None where a patch around it has no
-    /// such plane.
+    /// to four patches within the fit rings, each with a plane (its whole plane,
+    /// whole_patch_planes(), else the plane of its vertices within the fit rings): where its
+    /// grid edge meets the solid's boundary as those planes make it, the point on one of them
+    /// that bounds the solid next to the others (nearest its place where more than one does,
+    /// as on the edge line itself). The mesher put it on that edge because the edge crosses the
+    /// boundary there. None where a patch around it has no plane. A patch's plane near the
+    /// corner of a block is often only its local one: the whole-plane test refused a face
+    /// whose stairs a pocket interrupts (stepped_block turned at 100 cells: 65 of the 144 band
+    /// vertices left more than a tenth of a pitch off both faces within a pitch and a half of
+    /// an edge).
     std::optional<Vec3> point_between_planes(Index v, Scratch& scratch) const {
         std::array<Index, kMaxSides> patches{};
         gather_fit_rings(v, scratch);
@@ -523,8 +539,11 @@ private:
         if (count < 2) return std::nullopt;
         std::array<Side, kMaxSides> sides;
         for (std::size_t i = 0; i < count; ++i) {
-            if (!patch_plane_[patches[i]]) return std::nullopt;
-            sides[i] = {patches[i], *patch_plane_[patches[i]]};
+            const std::optional<PlaneFit> fit =
+                has_whole_plane(patches[i]) ? whole_plane_near(patches[i], scratch)
+                                            : fit_side(patches[i], OffFace::EitherSide, scratch);
+            if (!fit) return std::nullopt;
+            sides[i] = {patches[i], *fit};
         }
         const double tolerance = on_plane_tolerance();
         const Vec3& x = current_.mesh.positions[v];
@@ -933,18 +952,21 @@ private:
 
     /// The planes of `patches` around v (fits[i] for patches[i]): each fitted to its vertices
     /// within the fit rings of v, gathered when a patch first needs them, or a midpoint patch's
-    /// whole plane (then none are gathered: on mech by midpoints most vertices' patches have
-    /// one). Gives how many have a plane. `off_face`: as fit_side().
+    /// whole plane (then none are gathered for one side alone: on mech by midpoints most
+    /// vertices' patches have one; for two or more, its centroid is taken near v,
+    /// whole_plane_near()). Gives how many have a plane. `off_face`: as fit_side().
     std::size_t fit_sides(Index v, std::span<const Index> patches, OffFace off_face, Fits& fits,
                           Scratch& scratch) const {
         std::size_t fitted = 0;
         bool gathered = false;
         for (std::size_t i = 0; i < patches.size(); ++i) {
-            if (!gathered && !has_whole_plane(patches[i])) {
+            const bool whole = has_whole_plane(patches[i]);
+            if (!gathered && (!whole || patches.size() > 1)) {
                 gather_fit_rings(v, scratch);
                 gathered = true;
             }
-            fits[i] = fit_side(patches[i], off_face, scratch);
+            fits[i] = whole && gathered ? whole_plane_near(patches[i], scratch)
+                                        : fit_side(patches[i], off_face, scratch);
             fitted += fits[i].has_value();
         }
         return fitted;
@@ -1061,13 +1083,29 @@ private:
     }
 
     /// Flat face `patch`'s plane (flat_faces()) as a side whose vertices near the vertex are
-    /// `points` (not empty): its centroid theirs, brought onto the plane. The whole face's
-    /// centroid may lie anywhere, and bounds_solid() reads a side's centroid as a point of it
-    /// beside the edge: a flange ringing a hub has its centroid on the axis, behind the hub's
-    /// plane, and its concave edge with the hub was taken for convex (spool turned by OpenVDB
-    /// at 100 cells: 152 of the flanges' band vertices in front of them refused their face).
+    /// `points` (not empty): with_centroid_near().
     PlaneFit face_plane_near(Index patch, std::span<const Vec3> points) const {
-        PlaneFit fit = *flat_face_[patch];
+        return with_centroid_near(*flat_face_[patch], points);
+    }
+
+    /// Midpoint: `patch`'s whole plane (whole_patch_planes()) as a side of the vertex whose
+    /// vertices scratch holds: with_centroid_near() of the patch's among them within the fit
+    /// rings. On stepped_block turned at 100 cells the top face's centroid lay in its pocket,
+    /// and its convex edges with the pocket's walls were taken for concave: 71 band vertices
+    /// of the top refused its plane and stayed on their stairs (Edge F-score 0.60 -> 0.74).
+    PlaneFit whole_plane_near(Index patch, Scratch& scratch) const {
+        collect_side_points(patch, scratch, scratch.fit_reached);
+        if (scratch.points.empty()) return *patch_plane_[patch];
+        return with_centroid_near(*patch_plane_[patch], scratch.points);
+    }
+
+    /// `fit` with its centroid that of `points` (not empty), brought onto its plane. A whole
+    /// face's centroid may lie anywhere, and bounds_solid() reads a side's centroid as a point
+    /// of it beside the edge: a flange ringing a hub has its centroid on the axis, behind the
+    /// hub's plane, and its concave edge with the hub was taken for convex (spool turned by
+    /// OpenVDB at 100 cells: 152 of the flanges' band vertices in front of them refused their
+    /// face).
+    static PlaneFit with_centroid_near(PlaneFit fit, std::span<const Vec3> points) {
         Vec3 mean = Vec3::Zero();
         for (const Vec3& q : points) mean += q;
         fit.centroid = fit.plane.projection(mean / static_cast<double>(points.size()));
@@ -1202,18 +1240,119 @@ private:
     /// all lie on them, rounding alone parts the two fits). A flat face's midpoints scatter in
     /// stairs no quadratic follows.
     bool is_bent(std::span<const Vec3> points, const PlaneFit& fit) const {
-        const double h = rule_.grid.pitch;
-        const double least_sag = kMinSag * kMinSag * h * h;
-        const double square = fit.rms_distance * fit.rms_distance;
-        // The surface takes out at most the whole mean square: a plane this close needs no
-        // surface fitted to say so (most fits of a midpoint mesh of an axis-aligned part, whose
-        // faces' midpoints lie on their planes; the same verdicts to the bit).
-        if (!(square > least_sag)) return false;
-        const std::optional<HeightFit> bent = fit_height_quadric(points, fit.plane, fit.centroid);
-        if (!bent) return false;
-        const double sag = square - bent->rms_distance * bent->rms_distance;  // taken out
+        const std::optional<Bend> bend = bend_of(points, fit);
         // (kSagShare * rms) * rms, not kSagShare * square: rounded as before, the same verdicts.
-        return sag > kSagShare * fit.rms_distance * fit.rms_distance && sag > least_sag;
+        return bend && bend->sag > kSagShare * fit.rms_distance * fit.rms_distance &&
+               bend->sag > least_sag();
+    }
+
+    /// (kMinSag h)^2: the least mean square a bent surface must take out of its points'
+    /// distances to their plane.
+    double least_sag() const {
+        const double h = rule_.grid.pitch;
+        return kMinSag * kMinSag * h * h;
+    }
+
+    /// A quadratic height over a plane, and the mean square it takes out of the points'
+    /// distances to the plane.
+    struct Bend {
+        HeightFit surface;
+        double sag = 0.0;
+    };
+
+    /// The quadratic height over the points' plane `fit`; none where they lie within
+    /// least_sag() of the plane (mean square): a plane this close needs no surface fitted to say
+    /// so (most fits of a midpoint mesh of an axis-aligned part, whose faces' midpoints lie on
+    /// their planes; is_bent()'s verdicts the same to the bit), or where no quadratic fits them.
+    std::optional<Bend> bend_of(std::span<const Vec3> points, const PlaneFit& fit) const {
+        const double square = fit.rms_distance * fit.rms_distance;
+        if (!(square > least_sag())) return std::nullopt;
+        const std::optional<HeightFit> bent = fit_height_quadric(points, fit.plane, fit.centroid);
+        if (!bent) return std::nullopt;
+        return Bend{*bent, square - bent->rms_distance * bent->rms_distance};
+    }
+
+    /// Midpoint, patch scope: a vertex of a patch with no whole plane (whole_patch_planes())
+    /// whose vertices around lie on a bent face (bent_face()): the point where its grid edge
+    /// meets that face's quadratic height. Cylinders, cones and spheres of a few pitches and
+    /// more in radius; segmentation breaks their stairs into strips, each with a plane of its
+    /// own, and vertices moved onto those planes left the strips' borders creases over 30
+    /// degrees (spool at 100 cells, aligned: 5 times the true crease length, 4 of them on its
+    /// hub, bore and rims). The face is fitted to all vertices within the fit rings where no band
+    /// vertex is among them, else to the patch's own: a strip's vertices alone span too little
+    /// of its curve. None elsewhere: the vertex takes a plane, as before.
+    std::optional<Vec3> point_on_bent_face(Index v, Scratch& scratch) const {
+        if (rule_.placement != VertexPlacement::Midpoint || rule_.scope != FitScope::Patches ||
+            vertex_patch_[v] == kNoIndex || has_whole_plane(vertex_patch_[v]))
+            return std::nullopt;
+        gather_fit_rings(v, scratch);
+        const bool near_band = std::any_of(scratch.reached.begin(), scratch.reached.end(),
+                                           [&](Index j) { return in_band_[j] != 0; });
+        const Vec3 facing = near_band ? collect_side_points(vertex_patch_[v], scratch)
+                                      : collect_reached_points(scratch);
+        const std::optional<HeightFit> surface = bent_face(scratch.points, facing);
+        return surface ? along_edge_onto(v, *surface) : std::nullopt;
+    }
+
+    /// Into scratch.points every vertex gathered; gives the sum of their normals.
+    Vec3 collect_reached_points(Scratch& scratch) const {
+        scratch.points.clear();
+        Vec3 facing = Vec3::Zero();
+        for (Index j : scratch.reached) {
+            scratch.points.push_back(current_.mesh.positions[j]);
+            facing += current_.normals.vertex[j];
+        }
+        return facing;
+    }
+
+    /// Midpoint: the quadratic height of the points where they lie on a bent face: within the
+    /// midpoint scatter of a plane (max_scatter_) that the height bends away from by more than
+    /// least_sag() (mean square taken out), scattering about the height by no more than
+    /// midpoints do (kBentNoise), curving by at most kBentMaxCurvature. None elsewhere.
+    std::optional<HeightFit> bent_face(std::span<const Vec3> points, const Vec3& facing) const {
+        if (points.size() < static_cast<std::size_t>(options_.min_fit_points)) return std::nullopt;
+        const std::optional<PlaneFit> fit = fit_plane(points, facing);
+        if (!fit || fit->rms_distance > max_scatter_) return std::nullopt;
+        const std::optional<Bend> bend = bend_of(points, *fit);
+        if (!bend || !(bend->sag > least_sag())) return std::nullopt;
+        const double h = rule_.grid.pitch;
+        double expected = 0.0;  // the mean square midpoint error across the plane
+        for (const Vec3& p : points) {
+            const int axis = grid_edge_axis(p);
+            if (axis < 0) return std::nullopt;  // not a midpoint mesh's vertex
+            expected += fit->plane.normal[axis] * fit->plane.normal[axis];
+        }
+        expected *= h * h / 12.0 / static_cast<double>(points.size());
+        const HeightFit& surface = bend->surface;
+        if (!(surface.rms_distance * surface.rms_distance <= kBentNoise * expected))
+            return std::nullopt;
+        // The height's second derivatives [[2 c3, c4], [c4, 2 c5]] / scale^2: its largest
+        // principal curvature in size is |their mean| + the half spread of the two.
+        const Eigen::Vector<double, 6>& c = surface.coefficients;
+        const double curvature = (std::abs(c[3] + c[5]) + std::hypot(c[3] - c[5], c[4])) /
+                                 (surface.scale * surface.scale);
+        if (!(curvature * h <= kBentMaxCurvature)) return std::nullopt;
+        return surface;
+    }
+
+    /// Midpoint: where v's grid edge meets `surface`, by Newton steps along the edge from v's
+    /// place (at most kEdgeNewtonSteps; a quadratic height, so a few), brought within the edge.
+    /// None where the edge runs along the surface or v's input place is on no grid edge.
+    std::optional<Vec3> along_edge_onto(Index v, const HeightFit& surface) const {
+        const int axis = grid_edge_axis(input_[v]);
+        if (axis < 0) return std::nullopt;
+        const double h = rule_.grid.pitch;
+        Vec3 y = current_.mesh.positions[v];
+        SurfaceValue s = surface.evaluate(y);
+        for (int step = 0; step < kEdgeNewtonSteps; ++step) {
+            const double slope = s.gradient[axis];
+            if (!(std::abs(slope) > 1e-3 * s.gradient.norm())) return std::nullopt;
+            const double change = s.value / slope;
+            y[axis] -= change;
+            s = surface.evaluate(y);
+            if (std::abs(change) < 1e-9 * h) break;
+        }
+        return within_edge(v, axis, y, s.gradient.normalized());
     }
 
     /// Into scratch.points the gathered vertices of `patch` (near: off the bands, whose
@@ -1268,24 +1407,33 @@ private:
         if (std::abs(along) < 1e-3) return std::nullopt;  // the edge runs along the plane
         Vec3 y = x;
         y[axis] -= a.fit.plane.signed_distance(x) / along;
-        return within_edge(v, axis, y);
+        return within_edge(v, axis, y, a.fit.plane.normal);
     }
 
-    /// y (on v's grid edge's line) brought within the edge, kEdgeEndMargin short of its ends,
-    /// where it lies beyond them by at most kEdgeOvershoot; else y as it is (out of reach). The
-    /// true crossing lies on the edge, but a fitted plane off by a hundredth of a pitch meets
-    /// the line of an edge that runs nearly along it well beyond: the edge's end is then the
-    /// nearest the crossing can be. Short of the end: the crossings of the edges around a grid
-    /// node near the face make a small triangle, which has the orientation of the crossings'
-    /// signs only while each stays off the node; on the node it has no area, and the harm
-    /// check undoes its vertices' moves (stepped_block turned: 702 moves undone against 33).
-    Vec3 within_edge(Index v, int axis, Vec3 y) const {
+    /// y (on v's grid edge's line, on a surface of unit `normal` there) brought within the
+    /// edge, short of its ends, where it lies beyond them by at most kEdgeOvershoot; else y as
+    /// it is (out of reach). The true crossing lies on the edge, but a fitted plane off by a
+    /// hundredth of a pitch meets the line of an edge that runs nearly along it well beyond:
+    /// the edge's end is then the nearest the crossing can be. Short of the end: the crossings
+    /// of the edges around a grid node near the face make a small triangle, which has the
+    /// orientation of the crossings' signs only while each stays off the node; on the node it
+    /// has no area, and the harm check undoes its vertices' moves (stepped_block turned: 702
+    /// moves undone against 33). How far short: to the surface moved kEdgeEndMargin h |normal|
+    /// (its largest component) off the node, so the crossings around one node stay on a plane
+    /// parallel to the surface. Each kEdgeEndMargin h along its own edge, they made a small
+    /// triangle turned by up to 55 degrees from the face, and the slivers beside it creases of
+    /// 30 degrees and more (stepped_block turned at 100 cells: 164 mm of false crease beyond a
+    /// pitch from every true edge, Edge F-score 0.79 -> 0.85).
+    Vec3 within_edge(Index v, int axis, Vec3 y, const Vec3& normal) const {
         const double h = rule_.grid.pitch;
         const double low = rule_.grid.origin[axis] +
                            h * std::floor((input_[v][axis] - rule_.grid.origin[axis]) / h);
         if (y[axis] < low - kEdgeOvershoot * h || y[axis] > low + (1.0 + kEdgeOvershoot) * h)
             return y;
-        y[axis] = std::clamp(y[axis], low + kEdgeEndMargin * h, low + (1.0 - kEdgeEndMargin) * h);
+        const Vec3 size = normal.cwiseAbs();
+        const double margin =
+            size[axis] > 0.0 ? std::min(0.5, kEdgeEndMargin * size.maxCoeff() / size[axis]) : 0.5;
+        y[axis] = std::clamp(y[axis], low + margin * h, low + (1.0 - margin) * h);
         return y;
     }
 
@@ -1493,12 +1641,15 @@ private:
         return valid ? y : std::nullopt;
     }
 
-    /// Near, a band vertex with no point on its own side: the nearest point within its reach
-    /// on another side's surface (its second-order surface where curved, point_on_curved(); its
-    /// plane where that is flat within the junction scatter) that bounds the solid next to every
-    /// other side, its own among them; and that side's patch, which the moved mesh's
-    /// segmentation gives the vertex (patches_after_moves()). OpenVDB puts the vertex of a cell
-    /// a convex edge crosses behind both faces, nearer the other face than its own where the
+    /// A band vertex with no point on its own side: the nearest point within its reach on
+    /// another side's surface (near: its second-order surface where curved, point_on_curved();
+    /// its plane where that is flat within the junction scatter; midpoint: where its grid edge
+    /// meets the side's plane) that bounds the solid next to every other side, its own among
+    /// them; and that side's patch, which the moved mesh's segmentation gives the vertex
+    /// (patches_after_moves(); midpoint: the moved mesh is segmented anew). A midpoint vertex
+    /// segmentation gave one face may sit on a grid edge that crosses the other: the mesher put
+    /// it there because the edge crosses the boundary, wherever that is. OpenVDB puts the vertex of
+    /// a cell a convex edge crosses behind both faces, nearer the other face than its own where the
     /// edge runs off the grid axes; its own plane's foot then lies past the edge, and where
     /// keep_one_sided_junctions() also withdrew its junction it stayed off the surface, a crease
     /// each side of it (hex_prism turned at 100 cells: 21 of the top face's band vertices 0.2 to
@@ -1511,7 +1662,9 @@ private:
         FacePoint nearest;
         for (std::size_t i = 1; i < sides.size(); ++i) {
             std::optional<Vec3> y = point_on_curved(v, sides[i], scratch);
-            if (!y && sides[i].fit.rms_distance <= options_.max_junction_scatter * rule_.grid.pitch)
+            if (!y &&
+                (rule_.placement == VertexPlacement::Midpoint ||
+                 sides[i].fit.rms_distance <= options_.max_junction_scatter * rule_.grid.pitch))
                 y = point_on(v, sides[i]);
             if (!y || !within_reach(input_[v], *y)) continue;
             const bool valid = std::all_of(sides.begin(), sides.end(), [&](const Side& b) {

@@ -635,11 +635,10 @@ private:
     /// patches found. Midpoint: first every vertex onto the plane of its neighbourhood, which
     /// takes the stairs out of slanted faces, then, twice, onto the planes of the patches found
     /// on the mesh so far (kMidpointPatchRounds).
-    /// `smoothed` receives the detection made on the way (midpoint), which the moved mesh's
-    /// segmentation is then taken from. Midpoint: `input` keeps only its normals after (the
-    /// fallback detects anew).
+    /// Midpoint: `input` keeps only its normals after (the moved mesh and the fallback are
+    /// segmented anew).
     VertexMoves plan_moves(const InputSurface& surface, Detection& input,
-                           const PlacementChoice& choice, std::optional<Detection>& smoothed) {
+                           const PlacementChoice& choice) {
         StageClock clock(report_.stage_time, options_.stop);
         const VertexMoveOptions& options = options_.vertices.moves;
         const std::vector<Vec3>& from = surface.mesh.positions;
@@ -673,10 +672,8 @@ private:
         // on their whole planes it segments as an exact mesh does, and its patches reach the
         // edges (stepped_block turned, 100 cells: Edge F-score 0.10 -> 0.50).
         rule.scope = FitScope::Patches;
-        // Their vertices sit on fitted planes: elevation ties there are left to the vote
-        // (FeatureSegmentationOptions::inside_view_breaks_ties).
-        RestoreOptions stairless = options_;
-        stairless.features.inside_view_breaks_ties = false;
+        const RestoreOptions stairless = stairless_options();
+        std::optional<Detection> smoothed;
         for (int round = 0; round < kMidpointPatchRounds; ++round) {
             const Mesh current = moved_mesh(surface.mesh, moves);
             // The last round's detection goes before this one's allocates: the moves planned
@@ -690,12 +687,33 @@ private:
                                           options);
             });
         }
-        // Only the segmentations are read after (detect_bands_after_moves()); the rest goes
-        // before the restoration allocates (peak memory).
-        smoothed->normals = {};
-        smoothed->bands = {};
-        smoothed->feature_normals = {};
         return moves;
+    }
+
+    /// Midpoint: the options a mesh whose vertices sit on fitted surfaces is segmented with:
+    /// elevation ties there are left to the vote (FeatureSegmentationOptions::
+    /// inside_view_breaks_ties).
+    RestoreOptions stairless_options() const {
+        RestoreOptions stairless = options_;
+        stairless.features.inside_view_breaks_ties = false;
+        return stairless;
+    }
+
+    /// The detection the moved mesh `moved` is restored with. Near: the input's segmentations
+    /// (the moves stay within the cells), its normals made again around the moved vertices
+    /// (`input` gives them up). Midpoint: the moved mesh segmented anew. The segmentation of
+    /// the last round's mesh is a round behind the moves, whose vertices near the edges went
+    /// onto their faces only in this one: it left faces around them out of every patch, and a
+    /// band vertex of a flat face got the normal of the one sliver of its patch beside it, 16
+    /// degrees off (stepped_block turned at 100 cells: Edge F-score 0.757 -> 0.787).
+    Detection detect_after_moves(const Mesh& moved, Detection& input, VertexPlacement placement,
+                                 const std::vector<std::uint8_t>& moved_flags) const {
+        if (placement == VertexPlacement::Midpoint) {
+            input.normals = {};  // the fallback detects anew (peak memory)
+            return detect_bands(moved, input.connectivity, stairless_options());
+        }
+        return detect_bands_after_moves(moved, input, std::move(input.normals), moved_flags,
+                                        options_);
     }
 
     /// Near-surface restoration (issue 14, near/vertex_moves.h): vertices moved onto the sides
@@ -706,8 +724,8 @@ private:
     void restore_near(const Mesh& mesh, Detection& input, const PlacementChoice& choice,
                       const DuplicateFaces& duplicates, tbb::task_group& beside) {
         const InputSurface surface = input.surface(mesh);
-        std::optional<Detection> smoothed;
-        VertexMoves moves = plan_moves(surface, input, choice, smoothed);
+        const bool midpoint = choice.placement == VertexPlacement::Midpoint;
+        VertexMoves moves = plan_moves(surface, input, choice);
         if (options_.keep_segmentation) result_.segmentation.move_planned = moves.moved;
         // Moves that turn a face over are given up before the first round, not after it.
         const std::size_t planned = moves.moved_count;
@@ -716,18 +734,20 @@ private:
         // A vertex moved onto another patch's face is that patch's in the moved mesh: its
         // feature normal and crossing edges (near/vertex_moves.h). It stays so where the harm
         // rounds give its move up, and in the fallback on the input: a band vertex between the
-        // two faces, either patch's as much as the other's. (Midpoint moves take none.)
-        input.features.vertex_patch =
-            patches_after_moves(std::move(input.features.vertex_patch), moves);
+        // two faces, either patch's as much as the other's. (Midpoint: the moved mesh is
+        // segmented anew, detect_after_moves().)
+        if (!midpoint) {
+            input.features.vertex_patch =
+                patches_after_moves(std::move(input.features.vertex_patch), moves);
+        }
         // Nothing but the fallback below reads the input's bands and feature normals: where
         // rounds follow, they go before the rounds allocate, and the fallback makes them anew
         // (peak memory). Midpoint: gone already, with the segmentations.
-        const bool released = !smoothed && moves.moved_count > 0;
+        const bool released = !midpoint && moves.moved_count > 0;
         if (released) {
             input.bands = {};
             input.feature_normals = {};
         }
-        const Detection& segmented = smoothed ? *smoothed : input;
         // The rounds may borrow the input's triangles (RoundMesh): the counting beside, which
         // reads them, ends first (it is long done by now: it started with the moves' planning).
         Mesh* const lender = owned_ && &mesh == owned_ ? owned_ : nullptr;
@@ -743,8 +763,7 @@ private:
             Detection detection;
             {
                 RoundMesh moved(mesh, lender, std::move(moves.position));
-                detection = detect_bands_after_moves(
-                    moved.mesh(), segmented, std::move(input.normals), moves.moved, options_);
+                detection = detect_after_moves(moved.mesh(), input, choice.placement, moves.moved);
                 add_times(detection.stage_time);
                 auto give_up = [&](const std::vector<Index>& faces) {
                     return give_up_moves(mesh, faces, moved, moves.moved, detection);
@@ -766,7 +785,7 @@ private:
                                                         std::move(detection.normals), moves.moved);
         }
         report_.moves_undone += moves.moved_count;
-        if (smoothed) {
+        if (midpoint) {
             input = detect_bands(mesh, input.connectivity, options_);
             add_times(input.stage_time);
         } else if (released) {
