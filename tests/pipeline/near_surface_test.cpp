@@ -3,16 +3,23 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <limits>
+#include <map>
+#include <numbers>
+#include <utility>
 #include <vector>
 
+#include "resharp/mesh/geometry.h"
 #include "resharp/pipeline/restore.h"
 #include "resharp/sim/csg.h"
 #include "resharp/sim/csg_file.h"
 #include "resharp/sim/marching_cubes.h"
 #include "resharp/sim/tridexel.h"
+#include "support/grid_shapes.h"
 #include "support/invariants.h"
 #include "support/small_parts.h"
 
@@ -123,7 +130,10 @@ TEST(NearSurface, MidpointVerticesOfSlantedFacesLandOnTheirPlanes) {
 /// it. Before the sag test 221 of its 2,324 vertices ended more than a tenth of a pitch farther
 /// from the surface than the mesher put them, and their mean distance went 0.0715 -> 0.0823
 /// mm; with it, 27 and 0.0715 -> 0.0730 mm (still a little farther: the fits that pass,
-/// and move their vertices, are not all right).
+/// and move their vertices, are not all right). Since 2026-12-07 (the moved mesh segmented
+/// anew, bent faces onto their quadratic height): 40 and 0.0715 -> 0.0732 mm, 30 of the 40 on
+/// the boss, a cylinder of 6.2 pitches along the grid's z whose every layer of cells has the same
+/// stairs, so that its vertices tell no more than one cross-section does (20 before).
 TEST(NearSurface, MidpointVerticesOfCurvedFacesDoNotMoveOntoChords) {
     const Case c{SmallPart::BossedPlate, sim::Mesher::Midpoint, VertexMode::Midpoint};
     const Mesh input = test::small_part(c.part, 0.5, c.mesher);
@@ -139,7 +149,7 @@ TEST(NearSurface, MidpointVerticesOfCurvedFacesDoNotMoveOntoChords) {
         before += b;
         after += a;
     }
-    EXPECT_LE(farther, 40u);
+    EXPECT_LE(farther, 45u);
     EXPECT_LT(after, 1.03 * before) << before / static_cast<double>(input.vertex_count()) << " -> "
                                     << after / static_cast<double>(input.vertex_count()) << " mm";
 }
@@ -164,6 +174,180 @@ TEST(NearSurface, AMidpointMeshWhoseMovesFailIsRestoredOnTheExactPath) {
     EXPECT_EQ(near.report.feature_patches, exact.report.feature_patches);
     EXPECT_EQ(near.mesh.positions, exact.mesh.positions);
     EXPECT_EQ(near.mesh.triangles, exact.mesh.triangles);
+}
+
+/// A block 24 x 20 x 8 mm with a pocket 12 x 10 x 4 mm deep in its top, turned 27 degrees about
+/// (2, -1, 3) and moved into the positive octant, meshed at grid-edge midpoints at the pitch
+/// 0.5 (grid phase 0.37), with its 24 sharp edges (as segments a tenth of a pitch short of their
+/// corners).
+struct TurnedPocketedBlock {
+    sim::CsgSolid solid;
+    sim::GridSpec grid;
+    Mesh mesh;
+    std::vector<std::pair<Vec3, Vec3>> edges;
+
+    TurnedPocketedBlock()
+        : solid(sim::parse_csg(R"({"solid": {"union": [{"difference": [
+              {"box": {"min": [0, 0, 0], "max": [24, 20, 8]}},
+              {"box": {"min": [6, 5, 4], "max": [18, 15, 9]}}
+          ]}], "rotate": {"axis": [2, -1, 3], "degrees": 27}, "translate": [9.37, 8.29, 7.41]}})",
+                               "turned pocketed block")),
+          grid(sim::phased_grid(solid.bounds(), 0.5, 0.37)) {
+        sim::MeshingOptions meshing;
+        meshing.mesher = sim::Mesher::Midpoint;
+        mesh = sim::mesh_dexels(sim::sample_solid(grid, solid), meshing).mesh;
+        const Eigen::Matrix3d turn =
+            Eigen::AngleAxisd(27.0 * std::numbers::pi / 180.0, Vec3(2, -1, 3).normalized())
+                .toRotationMatrix();
+        const auto add = [&](const Vec3& a, const Vec3& b) {
+            const Vec3 short_of_corners = 0.05 * (b - a).normalized();
+            edges.emplace_back(turn * (a + short_of_corners) + Vec3(9.37, 8.29, 7.41),
+                               turn * (b - short_of_corners) + Vec3(9.37, 8.29, 7.41));
+        };
+        add_box_edges(Vec3(0, 0, 0), Vec3(24, 20, 8), add);
+        add_box_edges(Vec3(6, 5, 4), Vec3(18, 15, 8), add);  // the pocket: its rim at the top
+    }
+
+    /// The twelve edges of the box [lo, hi].
+    template <class Add>
+    static void add_box_edges(const Vec3& lo, const Vec3& hi, Add&& add) {
+        for (int axis = 0; axis < 3; ++axis) {
+            const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+            for (const double a : {lo[u], hi[u]}) {
+                for (const double b : {lo[w], hi[w]}) {
+                    Vec3 from = lo, to = hi;
+                    from[u] = to[u] = a;
+                    from[w] = to[w] = b;
+                    add(from, to);
+                }
+            }
+        }
+    }
+
+    double distance_to_edges(const Vec3& p) const {
+        double nearest = std::numeric_limits<double>::infinity();
+        for (const auto& [a, b] : edges) {
+            const Vec3 ab = b - a;
+            const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+            nearest = std::min(nearest, (a + t * ab - p).norm());
+        }
+        return nearest;
+    }
+
+    RestoreOptions options() const {
+        RestoreOptions o;
+        o.vertices.mode = VertexMode::Midpoint;
+        o.vertices.grid = {grid.pitch, grid.origin};
+        o.vertices.grid_origin_given = true;
+        return o;
+    }
+};
+
+/// The length of the mesh's sharp edges (faces parting by more than 30 degrees) for which
+/// `is_false` holds of their midpoint.
+template <class IsFalse>
+double crease_length_where(const Mesh& mesh, IsFalse&& is_false) {
+    std::map<std::pair<Index, Index>, Index> first_face;
+    const std::vector<Vec3> normals = face_normals(mesh);
+    const double min_cosine = std::cos(30.0 * std::numbers::pi / 180.0);
+    double length = 0.0;
+    for (Index f = 0; f < mesh.face_count(); ++f) {
+        const Triangle& t = mesh.triangles[f];
+        for (int i = 0; i < 3; ++i) {
+            const auto key = std::minmax(t[i], t[(i + 1) % 3]);
+            const auto [at, inserted] = first_face.emplace(key, f);
+            if (inserted) continue;
+            const Vec3 a = mesh.positions[key.first], b = mesh.positions[key.second];
+            if (normals[at->second].dot(normals[f]) < min_cosine && is_false(0.5 * (a + b)))
+                length += (b - a).norm();
+        }
+    }
+    return length;
+}
+
+// Turned off the grid axes, a midpoint mesh's band vertices along an edge sit on grid edges
+// that cross one face or the other. Three things left them on their stairs: the top's whole
+// plane, whose centroid lies in the pocket it rings, took its convex edges with the pocket's
+// walls for concave, and the band vertices of the top refused their plane; a vertex whose grid
+// edge crosses the other face had only its own to go to; a vertex between the faces had a point
+// only where every face around had a whole plane. Now the centroid is that of the vertices
+// near, a vertex goes to the other face where its grid edge meets it there, and a face without a
+// whole plane takes its plane near the vertex. Within a pitch and a half of an edge, vertices
+// left more than a tenth of a pitch off the surface: 92 -> 14 here.
+TEST(NearSurface, MidpointBandVerticesOfATurnedPocketedBlockGoOntoItsFaces) {
+    const TurnedPocketedBlock block;
+    const RestoreOptions options = block.options();
+    const RestoreResult r = restore(block.mesh, options);
+    ASSERT_EQ(r.report.vertex_placement, "midpoint");
+    std::size_t beside = 0, off_before = 0, off_after = 0;
+    for (Index v = 0; v < block.mesh.vertex_count(); ++v) {
+        const Vec3& x = block.mesh.positions[v];
+        if (block.distance_to_edges(x) > 1.5 * block.grid.pitch) continue;
+        ++beside;
+        const double tenth = 0.1 * block.grid.pitch;
+        off_before += test::distance_along_lines(block.solid, x) > tenth;
+        off_after += test::distance_along_lines(block.solid, r.mesh.positions[v]) > tenth;
+    }
+    EXPECT_GT(beside, 2000u);  // 2,344 here
+    EXPECT_GT(off_before, beside / 2);
+    EXPECT_LT(off_after, 20u);
+    test::expect_no_harm(block.mesh, r, options);
+}
+
+// Where a face passes near a grid node, the crossings on the edges around the node are moved
+// short of it. Each the same share of its edge short, they left a small triangle turned by up to
+// 55 degrees from the face, and slivers beside it creases over 30 degrees on flat faces; held on
+// a plane parallel to the face, they leave few. Crease length farther than a pitch from every
+// true edge here: input 5,712 mm, restored 100 -> 4.4 mm (47 with the same share short).
+TEST(NearSurface, MidpointCrossingsNearAGridNodeLeaveNoCreaseOnAFlatFace) {
+    const TurnedPocketedBlock block;
+    const RestoreOptions options = block.options();
+    const RestoreResult r = restore(block.mesh, options);
+    const auto beyond_a_pitch = [&](const Vec3& p) {
+        return block.distance_to_edges(p) > block.grid.pitch;
+    };
+    const double input = crease_length_where(block.mesh, beyond_a_pitch);
+    const double output = crease_length_where(r.mesh, beyond_a_pitch);
+    EXPECT_GT(input, 1000.0);
+    EXPECT_LT(output, 15.0);
+    test::expect_no_harm(block.mesh, r, options);
+}
+
+// A cylinder's wall meshed at midpoints is stairs; segmentation breaks it into strips, each
+// with a plane of its own as a patch's, and vertices moved onto those planes left creases over
+// 30 degrees where the strips meet. A patch without a plane as a whole whose vertices around lie
+// on a bent face now goes onto that face's quadratic height along its grid edges. A boss of
+// radius 12 pitches on a plate, turned off the grid axes: crease length on its wall, half a
+// millimetre and more from its circles, 216 -> 58 mm (149 with the other changes of 2026-12-07
+// alone), the input's 847.
+TEST(NearSurface, MidpointVerticesOfATurnedBossGoOntoItsCurveNotOntoStrips) {
+    const sim::CsgSolid solid(sim::parse_csg(R"({"solid": {"union": [{"union": [
+        {"box": {"min": [-10, -10, 0], "max": [10, 10, 4]}},
+        {"cylinder": {"from": [0, 0, 2], "to": [0, 0, 12], "radius": 6}}
+    ]}], "rotate": {"axis": [2, -1, 3], "degrees": 27}, "translate": [14.37, 13.29, 12.41]}})",
+                                             "turned boss"));
+    sim::MeshingOptions meshing;
+    meshing.mesher = sim::Mesher::Midpoint;
+    const Mesh input =
+        sim::mesh_dexels(sim::sample_solid(sim::phased_grid(solid.bounds(), 0.5, 0.37), solid),
+                         meshing)
+            .mesh;
+    const RestoreOptions options;  // the placement and the grid measured
+    const RestoreResult r = restore(input, options);
+    ASSERT_EQ(r.report.vertex_placement, "midpoint");
+    const Eigen::Matrix3d turn =
+        Eigen::AngleAxisd(27.0 * std::numbers::pi / 180.0, Vec3(2, -1, 3).normalized())
+            .toRotationMatrix();
+    const auto on_the_wall = [&](const Vec3& p) {
+        const Vec3 local = turn.transpose() * (p - Vec3(14.37, 13.29, 12.41));
+        const double radius = std::hypot(local.x(), local.y());
+        return std::abs(radius - 6.0) < 0.5 && local.z() > 4.5 && local.z() < 11.5;
+    };
+    const double in = crease_length_where(input, on_the_wall);
+    const double out = crease_length_where(r.mesh, on_the_wall);
+    EXPECT_GT(in, 500.0);
+    EXPECT_LT(out, 90.0);
+    test::expect_no_harm(input, r, options);
 }
 
 /// examples/cad/chamfered_block.json meshed by surface nets at 100 cells (h = 0.5 mm), as
