@@ -318,6 +318,27 @@ MESHER_ANALYSIS = {
         "h/8 (`--openvdb-fine 8`) the aligned stepped_block, chamfered_block and hex_prism "
         "inputs scored the same to the digits shown and the restored Edge F-scores 0.651, 0.759 "
         "and 0.743 against 0.647, 0.760 and 0.747 at h/4 (2026-12-03)."),
+    "midpoint": (
+        "What a midpoint mesh leaves to be found (measured 2026-12-07): a vertex lies at the "
+        "middle of the grid edge its crossing is on, up to half a pitch off it. A face across a "
+        "grid axis puts all its vertices at one height, its midpoints', whatever its true height "
+        "within the cells, and nothing in the mesh tells that height: the aligned parts' faces "
+        "along the grid planes, and with them their edges, stay where the midpoints put them "
+        "(stepped_block and chamfered_block aligned keep their input's Chamfer distance; an "
+        "edge is within tau only where both its faces happen to lie within about 0.15 h of "
+        "their midpoints' height). Off the grid axes the midpoints of one face scatter about it "
+        "and fix its plane: on stepped_block turned the moves put the vertices away from the "
+        "edges on their faces to 0.003 h (median, against the oracle along the true normal). "
+        "Until 2026-12-07 the turned rows stayed near 0.6 all the same; five additions brought "
+        "their band vertices onto the faces and kept slivers off them (docs/method.md, "
+        "*midpoint band vertices and the crossings near a grid node*): stepped_block turned "
+        "0.600 -> 0.845, chamfered_block turned 0.617 -> 0.890. Curved faces keep most of their "
+        "stairs: a quadratic fitted to the midpoints around a vertex is off a cylinder of 20 h "
+        "along a grid axis by 0.12 h rms (spool's hub), and tau there is 0.15 h; where a patch "
+        "has no plane as a "
+        "whole its vertices now go onto that quadratic (*curved faces onto their quadratic "
+        "height*; a turned boss of 12 h: crease on its wall 149 -> 58 mm), but the curved rows stay "
+        "far below the goal."),
 }
 
 
