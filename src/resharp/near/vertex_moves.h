@@ -129,17 +129,18 @@ struct MoveRule {
 /// patch (or, Neighbourhood, around it) moves along its input grid edge onto it, within the edge
 /// (short of its ends, the crossings around one grid node on a plane parallel to the face); a
 /// patch whose vertices off the bands scatter about one plane as midpoints of one face's crossings
-/// do has that plane, fitted to all of them (its centroid, which tells which part of it bounds
-/// the solid, that of its vertices near the vertex), and a vertex of no patch among patches with
-/// planes (as a whole, or near it) goes where its grid edge meets the boundary their planes make;
-/// a band vertex whose grid edge meets its own side's plane where that does not bound the solid
-/// goes where it meets another side's that does; a vertex of a patch with no plane as a whole
-/// whose vertices around lie on a bent face (a quadratic height over their plane fits them within
-/// the midpoint scatter, curving by at most 1 / 3 h) goes where its grid edge meets that height
-/// (Patches only). Exact: nothing moves. A vertex without a
-/// plane keeps its current position. Each vertex is decided alone, from the inputs only: the same
-/// on any number of threads. The result counts moves from the input positions. \throws InvalidInput
-/// if the grid's pitch is not positive or an option is out of range.
+/// do has that plane, fitted to all of them (near a grid plane, where that leaves some beyond
+/// their grid edges, the plane nearest it within every edge; its centroid, which tells which part
+/// of it bounds the solid, that of its vertices near the vertex), and a vertex of no patch among
+/// patches with planes (as a whole, or near it) goes where its grid edge meets the boundary their
+/// planes make; a band vertex whose grid edge meets its own side's plane where that does not bound
+/// the solid goes where it meets another side's that does; a vertex of a patch with no plane as a
+/// whole whose vertices around lie on a bent face (a quadratic height over their plane fits them
+/// within the midpoint scatter, curving by at most 1 / 3 h) goes where its grid edge meets that
+/// height (Patches only). Exact: nothing moves. A vertex without a plane keeps its current
+/// position. Each vertex is decided alone, from the inputs only: the same on any number of threads.
+/// The result counts moves from the input positions. \throws InvalidInput if the grid's pitch is
+/// not positive or an option is out of range.
 VertexMoves plan_vertex_moves(const InputSurface& current, const std::vector<Vec3>& input,
                               const std::vector<Index>& vertex_patch,
                               const BandClassification& bands, const MoveRule& rule,
