@@ -131,7 +131,8 @@ TEST(NearSurface, MidpointVerticesOfSlantedFacesLandOnTheirPlanes) {
 /// from the surface than the mesher put them, and their mean distance went 0.0715 -> 0.0823
 /// mm; with it, 27 and 0.0715 -> 0.0730 mm (still a little farther: the fits that pass,
 /// and move their vertices, are not all right). Since 2026-12-07 (the moved mesh segmented
-/// anew, bent faces onto their quadratic height): 40 and 0.0715 -> 0.0732 mm, 30 of the 40 on
+/// anew, bent faces onto their quadratic height): 40 and 0.0715 -> 0.0732 mm (43 with a third
+/// patch round), 30 of the 40 on
 /// the boss, a cylinder of 6.2 pitches along the grid's z whose every layer of cells has the same
 /// stairs, so that its vertices tell no more than one cross-section does (20 before).
 TEST(NearSurface, MidpointVerticesOfCurvedFacesDoNotMoveOntoChords) {
@@ -298,7 +299,8 @@ TEST(NearSurface, MidpointBandVerticesOfATurnedPocketedBlockGoOntoItsFaces) {
 // short of it. Each the same share of its edge short, they left a small triangle turned by up to
 // 55 degrees from the face, and slivers beside it creases over 30 degrees on flat faces; held on
 // a plane parallel to the face, they leave few. Crease length farther than a pitch from every
-// true edge here: input 5,712 mm, restored 100 -> 4.4 mm (47 with the same share short).
+// true edge here: input 5,712 mm, restored 100 -> 3.9 mm (with two patch rounds, 4.4 and 47 with
+// the same share short).
 TEST(NearSurface, MidpointCrossingsNearAGridNodeLeaveNoCreaseOnAFlatFace) {
     const TurnedPocketedBlock block;
     const RestoreOptions options = block.options();
@@ -320,7 +322,8 @@ TEST(NearSurface, MidpointCrossingsNearAGridNodeLeaveNoCreaseOnAFlatFace) {
 // passes within every vertex's edge is taken instead. A block turned 8 degrees about the grid's
 // z (its sides 8 degrees off grid planes): of the vertices of its sides two pitches and more from
 // its top and bottom, those more than a tenth of a pitch off the surface 483 -> 300 (the
-// input's 522), their median distance 0.079 -> 0.037 mm.
+// input's 522), their median distance 0.079 -> 0.037 mm, with two patch rounds; 154 and 0.017 mm
+// with three.
 TEST(NearSurface, MidpointFacesNearAGridPlaneTakeThePlaneWithinTheirEdges) {
     const sim::CsgSolid solid(sim::parse_csg(R"({"solid": {"union": [
         {"box": {"min": [0, 0, 0], "max": [16, 12, 5]}}
@@ -366,7 +369,7 @@ TEST(NearSurface, MidpointFacesNearAGridPlaneTakeThePlaneWithinTheirEdges) {
 // on a bent face now goes onto that face's quadratic height along its grid edges. A boss of
 // radius 12 pitches on a plate, turned off the grid axes: crease length on its wall, half a
 // millimetre and more from its circles, 216 -> 58 mm (149 with the other changes of 2026-12-07
-// alone), the input's 847.
+// alone), with two patch rounds; 53 mm with three; the input's 847.
 TEST(NearSurface, MidpointVerticesOfATurnedBossGoOntoItsCurveNotOntoStrips) {
     const sim::CsgSolid solid(sim::parse_csg(R"({"solid": {"union": [{"union": [
         {"box": {"min": [-10, -10, 0], "max": [10, 10, 4]}},
