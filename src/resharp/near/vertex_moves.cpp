@@ -997,12 +997,7 @@ private:
     std::size_t neighbourhood_side(Index v, Scratch& scratch,
                                    std::array<Side, kMaxSides>& sides) const {
         gather_fit_rings(v, scratch);
-        scratch.points.clear();
-        Vec3 facing = Vec3::Zero();
-        for (Index j : scratch.reached) {
-            scratch.points.push_back(current_.mesh.positions[j]);
-            facing += current_.normals.vertex[j];
-        }
+        const Vec3 facing = collect_reached_points(scratch);
         const std::optional<PlaneFit> fit = trusted_fit(scratch.points, facing);
         if (!fit) return 0;
         sides[0] = {kNoIndex, *fit};
@@ -1274,11 +1269,13 @@ private:
         // and how far off the face its grid edge lets it be.
         std::vector<Eigen::Vector3d> row(n);
         std::vector<double> height(n), bound(n);
+        std::vector<int> axis(n);
         for (std::size_t i = 0; i < n; ++i) {
             const Vec3 local = frame.transpose() * (points[i] - fit.centroid);
             row[i] = Eigen::Vector3d(local.x() / h, local.y() / h, 1.0);
             height[i] = local.z();
-            bound[i] = 0.5 * h * std::abs(fit.plane.normal[grid_edge_axis(input_[vertices[i]])]);
+            axis[i] = grid_edge_axis(input_[vertices[i]]);
+            bound[i] = 0.5 * h * std::abs(fit.plane.normal[axis[i]]);
         }
         Eigen::Vector3d height_over = Eigen::Vector3d::Zero();  // slopes and offset of the plane
         std::vector<signed char> side(n, 0), last(n, 2);        // beyond which bound, if any
@@ -1307,7 +1304,7 @@ private:
         double square = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
             const double d = normal.dot(points[i] - origin);
-            const double allowed = 0.5 * h * std::abs(normal[grid_edge_axis(input_[vertices[i]])]);
+            const double allowed = 0.5 * h * std::abs(normal[axis[i]]);
             if (std::abs(d) > allowed + kWholePatchFitError * h) return std::nullopt;
             square += d * d;
         }
