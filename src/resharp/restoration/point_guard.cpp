@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -226,24 +227,31 @@ private:
     std::size_t next_ = 0;
 };
 
+/// Whether point p was withdrawn (an empty list withdraws none).
+bool is_withdrawn(std::span<const std::uint8_t> withdrawn, Index p) {
+    return !withdrawn.empty() && withdrawn[p] != 0;
+}
+
 /// The slots being decided, and the repairs that change them. Every change is one of two
 /// kinds, which is what bounds the work: a point leaves a slot for good (a slot never gets a
 /// point back), or an edge's point is replaced by the corner point of one of its faces or by
-/// the point of another edge of one of its faces, at most once per edge (`snapped`). So there
-/// are at most as many changes as slots holding a point at the start, plus as many as edges
-/// holding one.
+/// the point of another edge of one of its faces, or an edge without a point takes the corner
+/// point of a face across the edge beside it, at most once per edge (`snapped`). So there are
+/// at most as many changes as slots holding a point at the start, plus as many as edges.
 class Repairs {
 public:
-    /// `first_corner_point`: the candidates' corner points are the points from it on
-    /// (SharpPoints::points).
-    Repairs(const InputSurface& input, PointSlots slots, const PieceVertices& ids,
-            const PieceJudge& judge, Index first_corner_point, GuardFlags& flags)
+    /// `slots`: the candidates' less the `withdrawn` points, or what an earlier run left of them.
+    Repairs(const InputSurface& input, const SharpPoints& candidates,
+            std::span<const std::uint8_t> withdrawn, PointSlots slots, const PieceVertices& ids,
+            const PieceJudge& judge, GuardFlags& flags)
         : input_(input),
           c_(input.connectivity),
+          candidates_(candidates),
+          withdrawn_(withdrawn),
           slots_(std::move(slots)),
           ids_(ids),
           judge_(judge),
-          first_corner_point_(first_corner_point),
+          first_corner_point_(static_cast<Index>(candidates.edge_points)),
           flags_(flags) {}
 
     const PointSlots& slots() const { return slots_; }
@@ -259,7 +267,8 @@ public:
     ///   edges still restores the sharp edge through both;
     /// - drop a single edge point (the first that is enough, in slot order), but a corner point
     ///   that the corner triangle across put on the edge only after the point of a crossing
-    ///   edge that f holds inside (first_single_drop());
+    ///   edge that f holds inside (first_single_drop()), and only after trying that corner
+    ///   point on an edge of f that has none (try_spreading_corner_across());
     /// - in a corner triangle, split one edge, then two, at the corner point instead of their
     ///   own points where those lie beyond the corner (beyond_corner()): where a sharp edge ends
     ///   at a corner, eq. 5.2's mid-plane can put its point past the corner, on the edge's
@@ -272,6 +281,10 @@ public:
     std::size_t repair(Index f) {
         if (try_merging(f)) return 0;
         if (first_single_drop(f)) return 1;
+        if (const std::optional<std::size_t> dropped = try_spreading_corner_across(f)) {
+            return *dropped;
+        }
+        if (drop_corner_across(f)) return 1;
         if (try_snapping(f, true)) return 0;
         if (slot(f, 3) != kNoIndex && replace_if_sound(f, 1u << 3, kNoIndex)) return 1;
         if (try_snapping(f, false)) return 0;
@@ -302,6 +315,7 @@ private:
     /// meeting the bottom face): its inner point and the corner point lie on one line with
     /// the vertex beyond the corner on the wrong side, and dropping the corner point there
     /// broke the corner triangle, whose pieces then turned over and lost all their points.
+    /// (The corner point's own drop is drop_corner_across().)
     bool first_single_drop(Index f) {
         bool corner_across = false;
         for (int i = 0; i < 3; ++i) {
@@ -313,14 +327,79 @@ private:
         }
         if (!corner_across) return false;
         const Index inside = slot(f, 3);
-        if (inside != kNoIndex && inside < first_corner_point_ &&
-            replace_if_sound(f, 1u << 3, kNoIndex)) {
-            return true;
-        }
+        return inside != kNoIndex && inside < first_corner_point_ &&
+               replace_if_sound(f, 1u << 3, kNoIndex);
+    }
+
+    /// Drops the first corner point of a corner triangle across an edge of face f whose drop
+    /// alone is enough.
+    bool drop_corner_across(Index f) {
         for (int i = 0; i < 3; ++i) {
             if (holds_corner_across(f, i) && replace_if_sound(f, 1u << i, kNoIndex)) return true;
         }
         return false;
+    }
+
+    /// Whether edge i of face f holds the corner point of the face across it.
+    bool holds_corner_of_face_across(Index f, int i) const {
+        const Index twin = c_.twin[3 * f + static_cast<Index>(i)];
+        return twin != kNoIndex && holds_corner_across(f, i) &&
+               slots_.corner_point(face_of(twin)) == slot(f, i);
+    }
+
+    /// The spreading step of repair(): face f holds on an edge the corner point of the face
+    /// across it, and an edge of f that has no point and was never snapped takes that corner
+    /// point too if f then splits without fault (the first such edge in slot order). A point of
+    /// a crossing edge that f holds inside must lie within merging reach (kMergeReach) of the
+    /// corner point, and goes. Beside a corner of mixed convexity (a pocket's wall meeting its rim)
+    /// the face next to the corner triangle reaches across the sharp edge that ends at the corner:
+    /// its other edge crosses that edge's extension, past the corner, where eq. 5.2 puts a point
+    /// that restores nothing, inside the face across if beyond its chord; with the corner point
+    /// on both edges, f's corner between them is cut off by the faces across and f lies on one
+    /// side. That face's point inside, if no farther from the corner point than two merged
+    /// points may be (kMergeReach), is the edge's point that the corner point replaces, and
+    /// goes. Gives the number of points dropped; nullopt if no edge takes the corner point.
+    std::optional<std::size_t> try_spreading_corner_across(Index f) {
+        for (int i = 0; i < 3; ++i) {
+            if (!holds_corner_of_face_across(f, i)) continue;
+            const Index corner = slot(f, i);
+            const bool inside = slot(f, 3) != kNoIndex;
+            if (inside && !holds_point_inside_near(f, corner)) return std::nullopt;
+            for (int j = 0; j < 3; ++j) {
+                const Index h = 3 * f + static_cast<Index>(j);
+                if (slot(f, j) != kNoIndex || flags_.snapped[h] || c_.twin[h] == kNoIndex ||
+                    !starts_with_points(face_of(c_.twin[h]))) {
+                    continue;
+                }
+                if (!replace_if_sound(f, 1u << j, corner, inside ? 1u << 3 : 0u)) continue;
+                mark_snapped(f, j);
+                const Index across = face_of(c_.twin[h]);
+                const bool drop_across = holds_point_inside_near(across, corner);
+                if (drop_across) set(across, 3, kNoIndex);
+                return std::size_t{inside} + std::size_t{drop_across};
+            }
+        }
+        return std::nullopt;
+    }
+
+    /// Whether face g holds a point among the candidates less the withdrawn ones. A repair
+    /// puts a point only onto edges between such faces: guard_points_again() finds the faces
+    /// whose work can change across those edges alone.
+    bool starts_with_points(Index g) const {
+        bool holds = false;
+        candidates_.slots.for_each_point(
+            g, [&](Index p) { holds = holds || !is_withdrawn(withdrawn_, p); });
+        return holds;
+    }
+
+    /// Whether face g holds inside the point of a crossing edge within merging reach of point
+    /// `near`.
+    bool holds_point_inside_near(Index g, Index near) const {
+        const Index inside = slot(g, 3);
+        if (inside == kNoIndex || inside >= first_corner_point_) return false;
+        const double reach = kMergeReach * std::sqrt(longest_edge_squared(input_.mesh, g));
+        return (ids_.position(ids_.of_point(inside)) - ids_.position(ids_.of_point(near))).norm() <=
+               reach;
     }
 
     /// Sets slot i of face f, and for an edge the same slot seen from the face across it.
@@ -344,24 +423,27 @@ private:
         if (c_.twin[h] != kNoIndex) flags_.snapped[c_.twin[h]] = 1;
     }
     /// Whether face f would split without fault with `replacement` in its slots `slots` (a bit
-    /// per slot, 0..3). Changes nothing.
-    bool sound_with(Index f, unsigned slots, Index replacement) {
+    /// per slot, 0..3) and no point in its slots `cleared`. Changes nothing.
+    bool sound_with(Index f, unsigned slots, Index replacement, unsigned cleared = 0) {
         std::array<Index, 4> kept{};
         for (int i = 0; i < 4; ++i) {
             kept[static_cast<std::size_t>(i)] = slot(f, i);
             if (slots & (1u << i)) slots_.set_slot(f, i, replacement);
+            if (cleared & (1u << i)) slots_.set_slot(f, i, kNoIndex);
         }
         const bool sound = fault_of(f) == Fault::None;
         for (int i = 0; i < 4; ++i) slots_.set_slot(f, i, kept[static_cast<std::size_t>(i)]);
         return sound;
     }
 
-    /// Puts `replacement` in the slots of face f in `slots` (a bit per slot, 0..3) if the face
-    /// then splits without fault; leaves them as they were otherwise.
-    bool replace_if_sound(Index f, unsigned slots, Index replacement) {
-        if (!sound_with(f, slots, replacement)) return false;
+    /// Puts `replacement` in the slots of face f in `slots` (a bit per slot, 0..3), and clears
+    /// its slots `cleared`, if the face then splits without fault; leaves them as they were
+    /// otherwise.
+    bool replace_if_sound(Index f, unsigned slots, Index replacement, unsigned cleared = 0) {
+        if (!sound_with(f, slots, replacement, cleared)) return false;
         for (int i = 0; i < 4; ++i) {
             if (slots & (1u << i)) set(f, i, replacement);
+            if (cleared & (1u << i)) set(f, i, kNoIndex);
         }
         return true;
     }
@@ -430,14 +512,24 @@ private:
         if (count != 2 || slot(f, edges[0]) == slot(f, edges[1])) return false;
         // A point that came onto its edge by a merge or snap stays where it is, and takes no
         // other: so a point goes only onto an edge of a face that holds it among the
-        // candidates, and is not carried along the band from face to face.
-        for (int i : {edges[0], edges[1]}) {
-            if (flags_.snapped[3 * f + static_cast<Index>(i)]) return false;
+        // candidates, and is not carried along the band from face to face. Except the corner
+        // point of the face across: it was snapped onto the edge it shares with f (its edge's
+        // point lay past the corner), and f's other point, this close, lies past the corner
+        // too (mixed convexity, see try_spreading_corner_across()); it goes one face on, onto
+        // the other edge, and no farther (f holds no corner point).
+        int keep_only = -1;  // edges[keep_only] is snapped: its point stays and goes on
+        for (int k = 0; k < 2; ++k) {
+            const int i = edges[static_cast<std::size_t>(k)];
+            if (!flags_.snapped[3 * f + static_cast<Index>(i)]) continue;
+            if (keep_only >= 0 || !holds_corner_of_face_across(f, i)) return false;
+            keep_only = k;
         }
         const double reach = kMergeReach * std::sqrt(longest_edge_squared(input_.mesh, f));
         if ((point_at(f, edges[0]) - point_at(f, edges[1])).norm() > reach) return false;
-        if (keep_second_first(f, edges[0], edges[1])) std::swap(edges[0], edges[1]);
-        for (int k = 0; k < 2; ++k) {
+        if (keep_only == 1 || (keep_only < 0 && keep_second_first(f, edges[0], edges[1]))) {
+            std::swap(edges[0], edges[1]);
+        }
+        for (int k = 0; k < (keep_only < 0 ? 2 : 1); ++k) {
             const int keep = edges[static_cast<std::size_t>(k)];
             const int change = edges[static_cast<std::size_t>(1 - k)];
             if (replace_if_sound(f, 1u << change, slot(f, keep))) {
@@ -464,6 +556,8 @@ private:
 
     const InputSurface& input_;
     const Connectivity& c_;
+    const SharpPoints& candidates_;
+    std::span<const std::uint8_t> withdrawn_;
     PointSlots slots_;
     const PieceVertices& ids_;
     const PieceJudge& judge_;
@@ -472,8 +566,9 @@ private:
 };
 
 /// Every slot of `accepted` holds the point it held among the candidates, a point a face of its
-/// edge held among the candidates (a snapped or merged edge), or none: the guard only takes
-/// away.
+/// edge held among the candidates (a snapped or merged edge), the corner point of a face across
+/// an edge of one of them (a corner point spread or merged one face on), or none: the guard
+/// only takes away.
 [[maybe_unused]] bool only_takes_away(const PointSlots& accepted, const SharpPoints& candidates,
                                       const Connectivity& c) {
     auto held_by = [&](Index f, Index id) {
@@ -481,24 +576,27 @@ private:
         candidates.slots.for_each_point(f, [&](Index p) { held = held || p == id; });
         return held;
     };
+    auto corner_beside = [&](Index f, Index id) {
+        for (Index k = 3 * f; k < 3 * f + 3; ++k) {
+            if (c.twin[k] != kNoIndex && candidates.slots.corner_point(face_of(c.twin[k])) == id)
+                return true;
+        }
+        return false;
+    };
     for (Index h = 0; h < 3 * accepted.face_count(); ++h) {
         const Index id = accepted.edge_point(h);
         if (id == kNoIndex || id == candidates.slots.edge_point(h)) continue;
         const Index twin = c.twin[h];
-        if (!held_by(face_of(h), id) && !(twin != kNoIndex && held_by(face_of(twin), id))) {
-            return false;
-        }
+        bool allowed = held_by(face_of(h), id) || corner_beside(face_of(h), id);
+        if (twin != kNoIndex)
+            allowed = allowed || held_by(face_of(twin), id) || corner_beside(face_of(twin), id);
+        if (!allowed) return false;
     }
     for (Index f = 0; f < accepted.face_count(); ++f) {
         const Index id = accepted.corner_point(f);
         if (id != kNoIndex && id != candidates.slots.corner_point(f)) return false;
     }
     return true;
-}
-
-/// Whether point p was withdrawn (an empty list withdraws none).
-bool is_withdrawn(std::span<const std::uint8_t> withdrawn, Index p) {
-    return !withdrawn.empty() && withdrawn[p] != 0;
 }
 
 /// Face f's candidate slots less the withdrawn points, written into the slots of face `into`
@@ -694,14 +792,14 @@ void validate(const GuardOptions& options, const SharpPoints& candidates,
 /// kept from an earlier run, if any. `flags` must be clear; the run leaves in them the faces
 /// whose slots it set.
 GuardedPoints guard_slots(const InputSurface& input, const FeatureNormals& feature_normals,
-                          const SharpPoints& candidates, PointSlots slots,
-                          std::span<const Index> first, std::vector<GuardRepair> log,
-                          const GuardOptions& options, GuardFlags& flags) {
+                          const SharpPoints& candidates, std::span<const std::uint8_t> withdrawn,
+                          PointSlots slots, std::span<const Index> first,
+                          std::vector<GuardRepair> log, const GuardOptions& options,
+                          GuardFlags& flags) {
     const PieceVertices ids(input.mesh, candidates.points);
     const ReferenceNormals reference{feature_normals, input.normals.vertex};
     const PieceJudge judge(input, reference, ids, options.thin_material_angle_deg);
-    Repairs repairs(input, std::move(slots), ids, judge, static_cast<Index>(candidates.edge_points),
-                    flags);
+    Repairs repairs(input, candidates, withdrawn, std::move(slots), ids, judge, flags);
     repair_faults(input.connectivity, first, repairs, flags.queued, log);
     GuardedPoints out{std::move(repairs).take_slots(), report_of(log), std::move(log)};
     RESHARP_EXPENSIVE_ASSERT(only_takes_away(out.accepted, candidates, input.connectivity));
@@ -717,8 +815,8 @@ GuardedPoints guard_points(const InputSurface& input, const FeatureNormals& feat
     PointSlots slots = starting_slots(candidates, withdrawn);
     const std::vector<Index> first = faces_with_points(slots);
     GuardFlags flags(input.mesh.face_count());
-    return guard_slots(input, feature_normals, candidates, std::move(slots), first, {}, options,
-                       flags);
+    return guard_slots(input, feature_normals, candidates, withdrawn, std::move(slots), first, {},
+                       options, flags);
 }
 
 GuardedPoints guard_points_again(const InputSurface& input, const FeatureNormals& feature_normals,
@@ -759,7 +857,7 @@ GuardedPoints guard_points_again(const InputSurface& input, const FeatureNormals
         for (const GuardRepair& r : previous.repairs) {
             if (!region_flags.in_region[r.face]) kept.push_back(r);
         }
-        return guard_slots(input, feature_normals, candidates, std::move(slots), first,
+        return guard_slots(input, feature_normals, candidates, withdrawn, std::move(slots), first,
                            std::move(kept), options, flags);
     };
     // Guarded again until the run leaves the border alone, each time searched across the

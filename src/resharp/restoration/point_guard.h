@@ -26,9 +26,10 @@ struct GuardReport {
     /// points dropped: a piece would turn against the face it replaces, or stand almost on
     /// edge across thin material
     std::size_t refused_by_guard = 0;
-    /// faces repaired. Each repair drops at least one point from a slot or moves one or two
-    /// edges' points onto their face's corner point (once per edge), so there are at most three
-    /// times as many as slots holding a point at the start.
+    /// faces repaired. Each repair drops at least one point from a slot, or puts onto an edge
+    /// (once per edge) its face's corner point, another edge's point of its face (a merge), or
+    /// the corner point of a face across its face's other edge (a spread), so there are at most
+    /// as many as slots holding a point at the start plus edges.
     std::size_t repairs = 0;
 };
 
