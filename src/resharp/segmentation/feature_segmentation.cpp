@@ -557,10 +557,13 @@ std::vector<std::uint8_t> crowded_sets(const Connectivity& c, const std::vector<
 /// hold fewer faces than a tiny patch, between faces it meets at a sharp edge (plate_holes_bosses
 /// at 100 cells: the counterbore was one band with no crossing edge). Such pieces join, across
 /// edges whose normals agree within the merge angle, into a set of at least `min_faces` faces
-/// that meets no other such set, and the set becomes one feature patch. Where two large sets
-/// meet, they are one smooth surface whose facets turn too sharply in places to join (the torus
-/// of 3 h aligned: its tube in sets, with crossing edges and five phantom points between them),
-/// and stay band. Returns the sets made feature patches. `tiny_faces`: the faces of the tiny
+/// that meets no other such set, and the set becomes one feature patch. Large sets that meet at
+/// under the sharp angle on average are one surface and unite first
+/// (unite_large_sets_across_smooth_borders()); where large sets still meet, they are one smooth
+/// surface whose facets turn too sharply in places to join (the torus of 3 h aligned: its tube
+/// in sets, with crossing edges and five phantom points between them), and stay band, as does
+/// a union that meets a feature patch smoothly (crowded_sets()). Returns the sets made feature
+/// patches. `tiny_faces`: the faces of the tiny
 /// patches before absorb_tiny(); those it moved into feature patches are left out here.
 std::size_t join_tiny_leftovers(const Connectivity& c, const std::vector<Vec3>& normals,
                                 double max_angle_deg, std::size_t min_faces,
