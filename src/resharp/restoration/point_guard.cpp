@@ -232,6 +232,14 @@ bool is_withdrawn(std::span<const std::uint8_t> withdrawn, Index p) {
     return !withdrawn.empty() && withdrawn[p] != 0;
 }
 
+/// Whether face f had a point at the start of the run that `before` withdrew points for.
+bool had_points_before(const SharpPoints& candidates, std::span<const std::uint8_t> before,
+                       Index f) {
+    bool any = false;
+    candidates.slots.for_each_point(f, [&](Index p) { any = any || !is_withdrawn(before, p); });
+    return any;
+}
+
 /// The slots being decided, and the repairs that change them. Every change is one of two
 /// kinds, which is what bounds the work: a point leaves a slot for good (a slot never gets a
 /// point back), or an edge's point is replaced by the corner point of one of its faces or by
@@ -349,16 +357,17 @@ private:
 
     /// The spreading step of repair(): face f holds on an edge the corner point of the face
     /// across it, and an edge of f that has no point and was never snapped takes that corner
-    /// point too if f then splits without fault (the first such edge in slot order). A point of
-    /// a crossing edge that f holds inside must lie within merging reach (kMergeReach) of the
-    /// corner point, and goes. Beside a corner of mixed convexity (a pocket's wall meeting its rim)
-    /// the face next to the corner triangle reaches across the sharp edge that ends at the corner:
-    /// its other edge crosses that edge's extension, past the corner, where eq. 5.2 puts a point
-    /// that restores nothing, inside the face across if beyond its chord; with the corner point
-    /// on both edges, f's corner between them is cut off by the faces across and f lies on one
-    /// side. That face's point inside, if no farther from the corner point than two merged
-    /// points may be (kMergeReach), is the edge's point that the corner point replaces, and
-    /// goes. Gives the number of points dropped; nullopt if no edge takes the corner point.
+    /// point too if f then splits without fault (the first such edge in slot order). Beside a
+    /// corner of mixed convexity (a pocket's wall meeting its rim) the face next to the corner
+    /// triangle reaches across the sharp edge that ends at the corner: its other edge crosses
+    /// that edge's extension past the corner, where eq. 5.2 puts a point that restores nothing
+    /// (inside the face across if beyond its chord). With the corner point on both edges, f's
+    /// corner between them is cut off by the faces across. A point inside f, or inside the face
+    /// across the new edge, within merging reach of the corner point is the one it replaces,
+    /// and goes; another point inside f stops the step. The new edge lies between faces that
+    /// had points at the start (had_points_before()): guard_points_again() finds the faces whose
+    /// work can change across such edges alone. Gives the number of points dropped; nullopt if
+    /// no edge takes the corner point.
     std::optional<std::size_t> try_spreading_corner_across(Index f) {
         for (int i = 0; i < 3; ++i) {
             if (!holds_corner_of_face_across(f, i)) continue;
@@ -368,7 +377,7 @@ private:
             for (int j = 0; j < 3; ++j) {
                 const Index h = 3 * f + static_cast<Index>(j);
                 if (slot(f, j) != kNoIndex || flags_.snapped[h] || c_.twin[h] == kNoIndex ||
-                    !starts_with_points(face_of(c_.twin[h]))) {
+                    !had_points_before(candidates_, withdrawn_, face_of(c_.twin[h]))) {
                     continue;
                 }
                 if (!replace_if_sound(f, 1u << j, corner, inside ? 1u << 3 : 0u)) continue;
@@ -382,24 +391,13 @@ private:
         return std::nullopt;
     }
 
-    /// Whether face g holds a point among the candidates less the withdrawn ones. A repair
-    /// puts a point only onto edges between such faces: guard_points_again() finds the faces
-    /// whose work can change across those edges alone.
-    bool starts_with_points(Index g) const {
-        bool holds = false;
-        candidates_.slots.for_each_point(
-            g, [&](Index p) { holds = holds || !is_withdrawn(withdrawn_, p); });
-        return holds;
-    }
-
     /// Whether face g holds inside the point of a crossing edge within merging reach of point
     /// `near`.
     bool holds_point_inside_near(Index g, Index near) const {
         const Index inside = slot(g, 3);
         if (inside == kNoIndex || inside >= first_corner_point_) return false;
-        const double reach = kMergeReach * std::sqrt(longest_edge_squared(input_.mesh, g));
         return (ids_.position(ids_.of_point(inside)) - ids_.position(ids_.of_point(near))).norm() <=
-               reach;
+               merge_reach(g);
     }
 
     /// Sets slot i of face f, and for an edge the same slot seen from the face across it.
@@ -524,8 +522,7 @@ private:
             if (keep_only >= 0 || !holds_corner_of_face_across(f, i)) return false;
             keep_only = k;
         }
-        const double reach = kMergeReach * std::sqrt(longest_edge_squared(input_.mesh, f));
-        if ((point_at(f, edges[0]) - point_at(f, edges[1])).norm() > reach) return false;
+        if ((point_at(f, edges[0]) - point_at(f, edges[1])).norm() > merge_reach(f)) return false;
         if (keep_only == 1 || (keep_only < 0 && keep_second_first(f, edges[0], edges[1]))) {
             std::swap(edges[0], edges[1]);
         }
@@ -538,6 +535,11 @@ private:
             }
         }
         return false;
+    }
+
+    /// How near two points of face f must lie to be merged (kMergeReach).
+    double merge_reach(Index f) const {
+        return kMergeReach * std::sqrt(longest_edge_squared(input_.mesh, f));
     }
 
     /// The position of the point in slot i of face f.
@@ -620,14 +622,6 @@ std::vector<Index> faces_with_points(const PointSlots& slots) {
         if (slots.has_points(f)) faces.push_back(f);
     }
     return faces;
-}
-
-/// Whether face f had a point at the start of the run that `before` withdrew points for.
-bool had_points_before(const SharpPoints& candidates, std::span<const std::uint8_t> before,
-                       Index f) {
-    bool any = false;
-    candidates.slots.for_each_point(f, [&](Index p) { any = any || !is_withdrawn(before, p); });
-    return any;
 }
 
 /// Per-face flags of guard_points_again()'s search for the faces to guard again, made once for
