@@ -1,7 +1,9 @@
 #include "resharp/near/concave_bevels.h"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -23,6 +25,15 @@ constexpr double kBevelReach = 2.0;
 constexpr double kBevelEndShare = 0.1;
 /// A strip two or three rows wide has at most about this many vertices per pitch of its length.
 constexpr double kStripRows = 4.0;
+/// A side that is not flat as a whole (a pocket's walls, one patch around its rounded corners)
+/// is fitted by its vertices within this many pitches of the strip's long axis: the rows beside
+/// the bevel, past the band, where the wall runs straight along it.
+constexpr double kLocalSideReach = 5.0;
+/// The plane most of a bevel's or a side's vertices lie on holds them to this share of the
+/// scatter allowed a flat fit: OpenVDB puts a bevel's vertices on one plane to rounding, and a
+/// tenth of a pitch would let the robust fit's test of two lines (ten times this apart) take
+/// three rows of a bevel for two.
+constexpr double kOnBevelPlane = 0.1;
 
 /// Per patch id, whether it could be a strip a few rows wide: no more vertices than kStripRows
 /// per pitch of its bounding box's diagonal (a face of side L has about (L / h)^2), and enough
@@ -105,51 +116,161 @@ std::vector<Index> within_two_steps(const std::vector<std::vector<Index>>& aroun
     return reached;
 }
 
+/// The places of the vertices listed, and the sum of their normals (the side a plane of them
+/// faces).
+struct PlacedPoints {
+    std::vector<Vec3> points;
+    Vec3 facing = Vec3::Zero();
+};
+
+PlacedPoints placed(const InputSurface& current, const std::vector<Index>& vertices) {
+    PlacedPoints placed;
+    placed.points.reserve(vertices.size());
+    for (Index v : vertices) {
+        placed.points.push_back(current.mesh.positions[v]);
+        placed.facing += current.normals.vertex[v];
+    }
+    return placed;
+}
+
 /// The plane of the vertices listed, where they lie on it within `scatter` (mm); facing their
 /// normals' side. None with fewer than `min_points`.
 std::optional<PlaneFit> flat_plane(const InputSurface& current, const std::vector<Index>& vertices,
                                    std::size_t min_points, double scatter) {
     if (vertices.size() < min_points) return std::nullopt;
-    std::vector<Vec3> points;
-    points.reserve(vertices.size());
-    Vec3 facing = Vec3::Zero();
-    for (Index v : vertices) {
-        points.push_back(current.mesh.positions[v]);
-        facing += current.normals.vertex[v];
-    }
-    std::optional<PlaneFit> fit = fit_plane(points, facing);
+    const PlacedPoints p = placed(current, vertices);
+    std::optional<PlaneFit> fit = fit_plane(p.points, p.facing);
     if (!fit || fit->rms_distance > scatter) return std::nullopt;
     return fit;
 }
 
-/// Whether patch `bevel` (its plane `own`) lies across the concave edge between two patches of
-/// planes a and b: each two normals part by more than the junction angle but the bevel's faces
-/// the same way as both (it lies across their corner), a's vertices in front of b's plane and b's
-/// in front of a's (the edge is concave), and all but kBevelEndShare of the bevel's vertices in
-/// front of both planes (in the corner's empty side) and within `reach` of their line.
-bool lies_across(const InputSurface& current, const std::vector<Index>& bevel, const Plane& own,
-                 const PlaneFit& a, const PlaneFit& b, double min_angle_cosine, double tolerance,
-                 double reach) {
-    const Vec3& na = a.plane.normal;
-    const Vec3& nb = b.plane.normal;
-    if (na.dot(nb) >= min_angle_cosine || own.normal.dot(na) <= 0.0 || own.normal.dot(nb) <= 0.0)
-        return false;
-    if (b.plane.signed_distance(a.centroid) < 0.0 || a.plane.signed_distance(b.centroid) < 0.0)
-        return false;
-    const Vec3 direction = na.cross(nb).normalized();
-    // The point of the line nearest the origin: on both planes and normal to the line.
-    Eigen::Matrix3d rows;
-    rows << na.transpose(), nb.transpose(), direction.transpose();
-    const Vec3 on_line = rows.partialPivLu().solve(Vec3(a.plane.offset, b.plane.offset, 0.0));
-    const auto across = std::count_if(bevel.begin(), bevel.end(), [&](Index v) {
-        const Vec3& x = current.mesh.positions[v];
+/// flat_plane() of the vertices listed, or where they scatter more, the plane most of them lie
+/// on to kOnBevelPlane of `scatter` (fit_plane_of_most()): a bevel that bends at its ends round
+/// a pocket's rounded corners, and the pocket's walls beside it, straight there but curved round
+/// the corners.
+std::optional<PlaneFit> plane_of_most(const InputSurface& current,
+                                      const std::vector<Index>& vertices, std::size_t min_points,
+                                      double scatter) {
+    if (vertices.size() < min_points) return std::nullopt;
+    const PlacedPoints p = placed(current, vertices);
+    const std::optional<PlaneFit> all = fit_plane(p.points, p.facing);
+    if (!all || all->rms_distance <= scatter) return all;
+    std::vector<Vec3> kept;
+    return fit_plane_of_most(p.points, p.facing, *all, kOnBevelPlane * scatter, min_points, kept);
+}
+
+/// The long axis of a strip where it lies on its plane: the line through the centroid of its
+/// vertices within `tolerance` of `plane` along their largest spread, and how far along it they
+/// reach. A bevel's ends, where it bends round a pocket's rounded corners, are left out, and with
+/// them the curved walls there.
+struct StripAxis {
+    Vec3 centre = Vec3::Zero();
+    Vec3 direction = Vec3::UnitX();
+    double from = 0.0, to = 0.0;
+
+    /// Whether x lies within `reach` of the axis, between the strip's ends.
+    bool near(const Vec3& x, double reach) const {
+        const Vec3 off = x - centre;
+        const double along = off.dot(direction);
+        return along >= from && along <= to && (off - along * direction).norm() <= reach;
+    }
+};
+
+/// `tolerance`: at least the rms distance of the vertices from `plane`.
+StripAxis strip_axis(const Mesh& mesh, const std::vector<Index>& vertices, const Plane& plane,
+                     double tolerance) {
+    std::vector<Vec3> on_plane;
+    for (Index v : vertices) {
+        if (std::abs(plane.signed_distance(mesh.positions[v])) <= tolerance)
+            on_plane.push_back(mesh.positions[v]);
+    }
+    // Not empty: `plane` is fitted to the vertices, so some lie within their rms of it.
+    StripAxis axis;
+    for (const Vec3& x : on_plane) axis.centre += x;
+    axis.centre /= static_cast<double>(on_plane.size());
+    Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+    for (const Vec3& x : on_plane) spread += (x - axis.centre) * (x - axis.centre).transpose();
+    axis.direction = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(spread).eigenvectors().col(2);
+    axis.from = std::numeric_limits<double>::infinity();
+    axis.to = -axis.from;
+    for (const Vec3& x : on_plane) {
+        const double along = (x - axis.centre).dot(axis.direction);
+        axis.from = std::min(axis.from, along);
+        axis.to = std::max(axis.to, along);
+    }
+    return axis;
+}
+
+/// The plane of the vertices listed within `reach` of the strip's axis, as flat_plane() gives
+/// it.
+std::optional<PlaneFit> flat_plane_near(const InputSurface& current,
+                                        const std::vector<Index>& vertices, const StripAxis& axis,
+                                        double reach, std::size_t min_points, double scatter) {
+    std::vector<Index> near;
+    std::copy_if(vertices.begin(), vertices.end(), std::back_inserter(near),
+                 [&](Index v) { return axis.near(current.mesh.positions[v], reach); });
+    return plane_of_most(current, near, min_points, scatter);
+}
+
+/// The two faces of a concave edge: their planes, and the edge's line.
+struct ConcaveCorner {
+    PlaneFit a, b;
+    Vec3 on_line = Vec3::Zero();  ///< the point of the line nearest the origin
+    Vec3 direction = Vec3::UnitX();
+
+    /// Whether x lies in front of both planes (in the corner's empty side, to `tolerance`) and
+    /// within `reach` of the line.
+    bool holds(const Vec3& x, double tolerance, double reach) const {
         if (a.plane.signed_distance(x) < -tolerance || b.plane.signed_distance(x) < -tolerance)
             return false;
         const Vec3 off = x - on_line;
         return (off - off.dot(direction) * direction).norm() <= reach;
+    }
+
+    /// Whether the corners of face t all lie in the corner (holds()), not all on one of its
+    /// planes (within `tolerance`): a row of faces between a bevel and a face, not the face's own.
+    bool holds_face(const Mesh& mesh, const std::array<Index, 3>& t, double tolerance,
+                    double reach) const {
+        const auto all = [&](auto&& test) {
+            return std::all_of(t.begin(), t.end(),
+                               [&](Index v) { return test(mesh.positions[v]); });
+        };
+        const auto on = [&](const Plane& plane) {
+            return [&](const Vec3& x) { return std::abs(plane.signed_distance(x)) <= tolerance; };
+        };
+        return all([&](const Vec3& x) { return holds(x, tolerance, reach); }) &&
+               !all(on(a.plane)) && !all(on(b.plane));
+    }
+};
+
+/// The corner of two patches of planes a and b where they meet at a concave edge: their normals
+/// part by more than the junction angle, a's vertices lie in front of b's plane and b's in front
+/// of a's; none otherwise.
+std::optional<ConcaveCorner> concave_corner(const PlaneFit& a, const PlaneFit& b,
+                                            double min_angle_cosine) {
+    const Vec3& na = a.plane.normal;
+    const Vec3& nb = b.plane.normal;
+    if (na.dot(nb) >= min_angle_cosine) return std::nullopt;
+    if (b.plane.signed_distance(a.centroid) < 0.0 || a.plane.signed_distance(b.centroid) < 0.0)
+        return std::nullopt;
+    ConcaveCorner corner{a, b};
+    corner.direction = na.cross(nb).normalized();
+    // The point of the line nearest the origin: on both planes and normal to the line.
+    Eigen::Matrix3d rows;
+    rows << na.transpose(), nb.transpose(), corner.direction.transpose();
+    corner.on_line = rows.partialPivLu().solve(Vec3(a.plane.offset, b.plane.offset, 0.0));
+    return corner;
+}
+
+/// Whether all but kBevelEndShare of the vertices lie in front of both of the corner's planes
+/// (in its empty side) and within `reach` of its line.
+bool mostly_in_corner(const InputSurface& current, const std::vector<Index>& vertices,
+                      const ConcaveCorner& corner, double tolerance, double reach) {
+    const auto in_corner = std::count_if(vertices.begin(), vertices.end(), [&](Index v) {
+        return corner.holds(current.mesh.positions[v], tolerance, reach);
     });
-    return static_cast<double>(across) >=
-           (1.0 - kBevelEndShare) * static_cast<double>(bevel.size());
+    return static_cast<double>(in_corner) >=
+           (1.0 - kBevelEndShare) * static_cast<double>(vertices.size());
 }
 
 /// The patch with the most faces around v (the first met of those tied), none if no face
@@ -165,27 +286,58 @@ Index most_faces_around(const Connectivity& connectivity, const std::vector<Inde
     return best;
 }
 
-}  // namespace
+/// The faces to dissolve with the bevels of `across` (per patch id: the corner a bevel lies
+/// across, none for the others): the bevels' own, and those reached from them across edges that
+/// lie in the bevel's corner off its faces (ConcaveCorner::holds_face()), whatever their patch.
+/// OpenVDB's bevel across mech's pocket floor edges (y = 14, z = 19 at pitch 0.5 mm) runs floor,
+/// a row at 16 degrees, the bevel's two rows at 45, a row at 74, wall: the row at 74 degrees
+/// grew into the patch of the next wall round the pocket's corner, and left there it gave the
+/// bevel's vertices three patches around them, one with no plane nearby: they stayed where they
+/// were, with no crease left along the edge. Bound: each face once.
+std::vector<std::uint8_t> faces_in_bevel_corners(
+    const InputSurface& current, const std::vector<Index>& face_patch,
+    const std::vector<std::optional<ConcaveCorner>>& across, double tolerance, double reach) {
+    const Mesh& mesh = current.mesh;
+    std::vector<std::uint8_t> taken(mesh.face_count(), 0);
+    std::vector<std::pair<Index, const ConcaveCorner*>> open;
+    for (Index f = 0; f < mesh.face_count(); ++f) {
+        const Index p = face_patch[f];
+        if (p == kNoIndex || p >= across.size() || !across[p]) continue;
+        taken[f] = 1;
+        open.emplace_back(f, &*across[p]);
+    }
+    while (!open.empty()) {
+        const auto [f, corner] = open.back();
+        open.pop_back();
+        for (Index k = 0; k < 3; ++k) {
+            const Index twin = current.connectivity.twin[3 * f + k];
+            if (twin == kNoIndex) continue;
+            const Index g = face_of(twin);
+            if (taken[g] || face_patch[g] == kNoIndex) continue;
+            if (corner->holds_face(mesh, mesh.triangles[g], tolerance, reach)) {
+                taken[g] = 1;
+                open.emplace_back(g, corner);
+            }
+        }
+    }
+    return taken;
+}
 
-BevelDissolution without_concave_bevels(const InputSurface& current, FeatureSegmentation features,
-                                        const BandClassification& bands, const Grid& grid,
-                                        const VertexMoveOptions& options) {
-    const double h = grid.pitch;
+/// Per patch id, the concave corner the strip of that patch lies across, for each strip that has
+/// a plane (`whole`, per patch id) and is a bevel; none for the others. The sides are the patches
+/// within two steps of the strip, each with its plane as a whole, or where it has none (a pocket's
+/// walls round its rounded corners), the plane of its vertices along the strip; a bevel faces the
+/// same way as both of two sides that meet at a concave edge, and all but kBevelEndShare of its
+/// vertices lie in their corner within kBevelReach. Bound: per strip, a plane fit for each
+/// side with none as a whole, and a test per pair of sides.
+std::vector<std::optional<ConcaveCorner>> bevel_corners(
+    const InputSurface& current, const FeatureSegmentation& features,
+    const std::vector<std::uint8_t>& in_band, const PatchMembers& strips_members,
+    const std::vector<std::optional<PlaneFit>>& whole, const VertexMoveOptions& options, double h) {
+    const std::size_t patches = features.patch_count;
     const double scatter = options.max_scatter_near * h;
     const auto min_points = static_cast<std::size_t>(options.min_fit_points);
     const double min_angle_cosine = std::cos(options.junction_angle_deg * std::numbers::pi / 180.0);
-    const std::size_t patches = features.patch_count;
-    const std::vector<std::uint8_t> strip = strips(current, features, h, min_points);
-    if (std::find(strip.begin(), strip.end(), 1) == strip.end()) return {std::move(features), 0};
-    // A strip's plane as a bevel: all its vertices (those off the bands run along its middle,
-    // on one line, and a bevel's ends, where it meets the next one's at a corner, part from its
-    // plane by a few hundredths of a pitch).
-    const std::vector<std::uint8_t> in_band = band_vertices(current.mesh, bands);
-    const PatchMembers strips_members = patch_members(current.mesh, features, in_band, strip);
-    std::vector<std::optional<PlaneFit>> whole(patches);
-    for_each_index(patches, 1, [&](std::size_t p) {
-        if (strip[p]) whole[p] = flat_plane(current, strips_members.all[p], min_points, scatter);
-    });
     const std::vector<std::vector<Index>> around = neighbouring_patches(current.mesh, features);
     // The faces a flat strip may lie across, each with its plane as a side (its vertices off
     // the bands, which lie on its face).
@@ -201,34 +353,97 @@ BevelDissolution without_concave_bevels(const InputSurface& current, FeatureSegm
     for_each_index(patches, 1, [&](std::size_t p) {
         if (wanted[p]) side[p] = flat_plane(current, members.off_band[p], min_points, scatter);
     });
-    std::vector<std::uint8_t> dissolved(patches, 0);
+    std::vector<std::optional<ConcaveCorner>> across(patches);
     for_each_index(patches, 1, [&](std::size_t p) {
         if (!whole[p]) return;
         const std::vector<Index>& next = sides[p];
-        for (std::size_t i = 0; i < next.size() && !dissolved[p]; ++i) {
-            for (std::size_t j = i + 1; j < next.size() && !dissolved[p]; ++j) {
-                if (!side[next[i]] || !side[next[j]]) continue;
-                dissolved[p] =
-                    lies_across(current, strips_members.all[p], whole[p]->plane, *side[next[i]],
-                                *side[next[j]], min_angle_cosine, scatter, kBevelReach * h);
+        const StripAxis axis =
+            strip_axis(current.mesh, strips_members.all[p], whole[p]->plane, scatter);
+        std::vector<std::optional<PlaneFit>> plane(next.size());
+        for (std::size_t i = 0; i < next.size(); ++i) {
+            plane[i] = side[next[i]] ? side[next[i]]
+                                     : flat_plane_near(current, members.off_band[next[i]], axis,
+                                                       kLocalSideReach * h, min_points, scatter);
+        }
+        const Vec3& own = whole[p]->plane.normal;
+        for (std::size_t i = 0; i < next.size() && !across[p]; ++i) {
+            for (std::size_t j = i + 1; j < next.size() && !across[p]; ++j) {
+                if (!plane[i] || !plane[j]) continue;
+                // The bevel faces the same way as both faces: it lies across their corner.
+                if (own.dot(plane[i]->plane.normal) <= 0.0 ||
+                    own.dot(plane[j]->plane.normal) <= 0.0)
+                    continue;
+                const std::optional<ConcaveCorner> corner =
+                    concave_corner(*plane[i], *plane[j], min_angle_cosine);
+                if (corner && mostly_in_corner(current, strips_members.all[p], *corner, scatter,
+                                               kBevelReach * h))
+                    across[p] = corner;
             }
         }
     });
-    BevelDissolution r{std::move(features), 0};
-    r.bevels = static_cast<std::size_t>(std::count(dissolved.begin(), dissolved.end(), 1));
-    if (r.bevels == 0) return r;
-    // In place: every patch is judged above, and a vertex's new patch reads the faces' alone.
-    FeatureSegmentation& out = r.features;
-    for (Index& p : out.face_patch) {
-        if (p != kNoIndex && p < patches && dissolved[p]) p = kNoIndex;
+    return across;
+}
+
+/// Takes the faces flagged in `taken` out of their patches in `features`, and gives a new patch
+/// (the one with the most faces around it, none if no face around it has one) to each vertex of
+/// a bevel's patch (`bevel`, per patch id) and each vertex that lost a face of its patch and has
+/// none left around it; the others keep theirs (a vertex whose faces all lie in bands has the
+/// patch whose plane it lies on, refine_border_labels()). In place: every patch is judged
+/// before, and a vertex's new patch reads the faces' alone.
+void dissolve(const InputSurface& current, const std::vector<std::uint8_t>& taken,
+              const std::vector<std::uint8_t>& bevel, FeatureSegmentation& features) {
+    const std::vector<Index> before = features.face_patch;
+    for (Index f = 0; f < current.mesh.face_count(); ++f) {
+        if (taken[f]) features.face_patch[f] = kNoIndex;
     }
     std::vector<std::pair<Index, int>> counts;
     for (Index v = 0; v < current.mesh.vertex_count(); ++v) {
-        const Index p = out.vertex_patch[v];
-        if (p != kNoIndex && p < patches && dissolved[p])
-            out.vertex_patch[v] =
-                most_faces_around(current.connectivity, out.face_patch, v, counts);
+        const Index p = features.vertex_patch[v];
+        if (p == kNoIndex || p >= bevel.size()) continue;
+        const auto ring = current.connectivity.faces_around(v);
+        const bool lost = bevel[p] || std::any_of(ring.begin(), ring.end(), [&](Index f) {
+                              return taken[f] && before[f] == p;
+                          });
+        if (!lost) continue;
+        const bool kept = std::any_of(ring.begin(), ring.end(),
+                                      [&](Index f) { return features.face_patch[f] == p; });
+        if (!kept)
+            features.vertex_patch[v] =
+                most_faces_around(current.connectivity, features.face_patch, v, counts);
     }
+}
+
+}  // namespace
+
+BevelDissolution without_concave_bevels(const InputSurface& current, FeatureSegmentation features,
+                                        const BandClassification& bands, const Grid& grid,
+                                        const VertexMoveOptions& options) {
+    const double h = grid.pitch;
+    const double scatter = options.max_scatter_near * h;
+    const auto min_points = static_cast<std::size_t>(options.min_fit_points);
+    const std::size_t patches = features.patch_count;
+    const std::vector<std::uint8_t> strip = strips(current, features, h, min_points);
+    if (std::find(strip.begin(), strip.end(), 1) == strip.end()) return {std::move(features), 0};
+    // A strip's plane as a bevel: of all its vertices (those off the bands run along its middle,
+    // on one line, and a bevel's ends, where it meets the next one's at a corner, part from its
+    // plane by a few hundredths of a pitch, or bend round a pocket's rounded corner).
+    const std::vector<std::uint8_t> in_band = band_vertices(current.mesh, bands);
+    const PatchMembers strips_members = patch_members(current.mesh, features, in_band, strip);
+    std::vector<std::optional<PlaneFit>> whole(patches);
+    for_each_index(patches, 1, [&](std::size_t p) {
+        if (strip[p]) whole[p] = plane_of_most(current, strips_members.all[p], min_points, scatter);
+    });
+    const std::vector<std::optional<ConcaveCorner>> across =
+        bevel_corners(current, features, in_band, strips_members, whole, options, h);
+    std::vector<std::uint8_t> bevel(patches, 0);
+    for (std::size_t p = 0; p < patches; ++p) bevel[p] = across[p].has_value();
+    BevelDissolution r{std::move(features), 0};
+    r.bevels = static_cast<std::size_t>(std::count(bevel.begin(), bevel.end(), 1));
+    if (r.bevels == 0) return r;
+    dissolve(
+        current,
+        faces_in_bevel_corners(current, r.features.face_patch, across, scatter, kBevelReach * h),
+        bevel, r.features);
     return r;
 }
 
