@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -106,6 +107,30 @@ TEST(PlaneOfMost, TwoLinesOfPointsAreNoFace) {
     EXPECT_GT(first->rms_distance, 0.01);
     std::vector<Vec3> scratch;
     EXPECT_FALSE(fit_plane_of_most(points, Vec3(-0.2, 1, 0), *first, 1e-6, 6, scratch));
+}
+
+// fit_plane_trimmed() keeps the plane where the points kept lie on two lines: OpenVDB's bevel
+// across a concave edge two rows wide is a plane all the same, its ends bent off it (round a
+// pocket's rounded corners) left out.
+TEST(PlaneOfMost, TrimmedKeepsTwoLinesAndLeavesTheBentEndsOut) {
+    std::vector<Vec3> points;
+    for (int k = 0; k < 10; ++k) {
+        const double end = k < 2 ? 0.3 * (2 - k) : 0.0;  // the first two columns bend away
+        points.emplace_back(0.5 * k, 0.0, end);
+        points.emplace_back(0.5 * k, 0.35, 0.35 + end);
+    }
+    const std::optional<PlaneFit> first = fit_plane(points, Vec3(0, -1, 1));
+    ASSERT_TRUE(first);
+    EXPECT_GT(first->rms_distance, 0.05);
+    std::vector<Vec3> kept;
+    EXPECT_FALSE(fit_plane_of_most(points, Vec3(0, -1, 1), *first, 1e-3, 6, kept));
+    const std::optional<PlaneFit> trimmed =
+        fit_plane_trimmed(points, Vec3(0, -1, 1), *first, 1e-3, 6, kept);
+    ASSERT_TRUE(trimmed);
+    EXPECT_LT(trimmed->rms_distance, 1e-9);
+    EXPECT_TRUE(trimmed->plane.normal.isApprox(Vec3(0, -1, 1).normalized(), 1e-9));
+    EXPECT_GE(kept.size(), 14u);  // of 20: the two bent columns' four, and a round's slack
+    EXPECT_TRUE(std::none_of(kept.begin(), kept.end(), [](const Vec3& x) { return x.x() < 0.75; }));
 }
 
 // A line of points and one beside it spread across their plane by almost nothing; a lattice

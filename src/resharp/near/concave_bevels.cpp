@@ -29,10 +29,9 @@ constexpr double kStripRows = 4.0;
 /// is fitted by its vertices within this many pitches of the strip's long axis: the rows beside
 /// the bevel, past the band, where the wall runs straight along it.
 constexpr double kLocalSideReach = 5.0;
-/// The plane most of a bevel's or a side's vertices lie on holds them to this share of the
-/// scatter allowed a flat fit: OpenVDB puts a bevel's vertices on one plane to rounding, and a
-/// tenth of a pitch would let the robust fit's test of two lines (ten times this apart) take
-/// three rows of a bevel for two.
+/// The plane most of a side's vertices lie on holds them to this share of the scatter allowed a
+/// flat fit: a face's vertices off the bands lie on it to rounding, and the full scatter would
+/// let the test of two lines (ten times this apart) take three rows of a face for two.
 constexpr double kOnBevelPlane = 0.1;
 
 /// Per patch id, whether it could be a strip a few rows wide: no more vertices than kStripRows
@@ -144,19 +143,33 @@ std::optional<PlaneFit> flat_plane(const InputSurface& current, const std::vecto
     return fit;
 }
 
+/// What a plane of most of a patch's vertices is taken for (plane_of_most()).
+enum class MostOf {
+    /// A bevel: the plane its vertices scatter about within the flat fit's scatter once the
+    /// farthest are left out (its ends, where it bends round a pocket's rounded corners; its
+    /// cross-section, where OpenVDB bends it by a few degrees between its rows). Two rows of a
+    /// bevel are a plane.
+    Bevel,
+    /// A face beside a bevel (a pocket's walls, straight along it but curved round the corners):
+    /// the plane most of its vertices lie on to kOnBevelPlane of that scatter, not two lines
+    /// (fit_plane_of_most()).
+    Face,
+};
+
 /// flat_plane() of the vertices listed, or where they scatter more, the plane most of them lie
-/// on to kOnBevelPlane of `scatter` (fit_plane_of_most()): a bevel that bends at its ends round
-/// a pocket's rounded corners, and the pocket's walls beside it, straight there but curved round
-/// the corners.
+/// on, taken as `kind` says.
 std::optional<PlaneFit> plane_of_most(const InputSurface& current,
                                       const std::vector<Index>& vertices, std::size_t min_points,
-                                      double scatter) {
+                                      double scatter, MostOf kind) {
     if (vertices.size() < min_points) return std::nullopt;
     const PlacedPoints p = placed(current, vertices);
     const std::optional<PlaneFit> all = fit_plane(p.points, p.facing);
     if (!all || all->rms_distance <= scatter) return all;
     std::vector<Vec3> kept;
-    return fit_plane_of_most(p.points, p.facing, *all, kOnBevelPlane * scatter, min_points, kept);
+    return kind == MostOf::Bevel
+               ? fit_plane_trimmed(p.points, p.facing, *all, scatter, min_points, kept)
+               : fit_plane_of_most(p.points, p.facing, *all, kOnBevelPlane * scatter, min_points,
+                                   kept);
 }
 
 /// The long axis of a strip where it lies on its plane: the line through the centroid of its
@@ -209,7 +222,7 @@ std::optional<PlaneFit> flat_plane_near(const InputSurface& current,
     std::vector<Index> near;
     std::copy_if(vertices.begin(), vertices.end(), std::back_inserter(near),
                  [&](Index v) { return axis.near(current.mesh.positions[v], reach); });
-    return plane_of_most(current, near, min_points, scatter);
+    return plane_of_most(current, near, min_points, scatter, MostOf::Face);
 }
 
 /// The two faces of a concave edge: their planes, and the edge's line.
@@ -431,7 +444,9 @@ BevelDissolution without_concave_bevels(const InputSurface& current, FeatureSegm
     const PatchMembers strips_members = patch_members(current.mesh, features, in_band, strip);
     std::vector<std::optional<PlaneFit>> whole(patches);
     for_each_index(patches, 1, [&](std::size_t p) {
-        if (strip[p]) whole[p] = plane_of_most(current, strips_members.all[p], min_points, scatter);
+        if (strip[p])
+            whole[p] =
+                plane_of_most(current, strips_members.all[p], min_points, scatter, MostOf::Bevel);
     });
     const std::vector<std::optional<ConcaveCorner>> across =
         bevel_corners(current, features, in_band, strips_members, whole, options, h);

@@ -114,7 +114,7 @@ double in_plane_spread(std::span<const Vec3> points, const PlaneFit& fit) {
     return mean + radius > 0.0 ? std::max(mean - radius, 0.0) / (mean + radius) : 0.0;
 }
 
-std::optional<PlaneFit> fit_plane_of_most(std::span<const Vec3> points, const Vec3& facing,
+std::optional<PlaneFit> fit_plane_trimmed(std::span<const Vec3> points, const Vec3& facing,
                                           const PlaneFit& first, double exact,
                                           std::size_t min_points, std::vector<Vec3>& kept) {
     const std::size_t least = std::max<std::size_t>({min_points, (points.size() + 1) / 2, 3});
@@ -136,7 +136,14 @@ std::optional<PlaneFit> fit_plane_of_most(std::span<const Vec3> points, const Ve
         if (!next) return std::nullopt;
         fit = *next;
     }
-    if (on_two_lines(kept, fit, 10.0 * exact)) return std::nullopt;
+    return fit;
+}
+
+std::optional<PlaneFit> fit_plane_of_most(std::span<const Vec3> points, const Vec3& facing,
+                                          const PlaneFit& first, double exact,
+                                          std::size_t min_points, std::vector<Vec3>& kept) {
+    std::optional<PlaneFit> fit = fit_plane_trimmed(points, facing, first, exact, min_points, kept);
+    if (fit && on_two_lines(kept, *fit, 10.0 * exact)) return std::nullopt;
     return fit;
 }
 

@@ -33,20 +33,25 @@ struct PlaneFit {
 /// than three, or all on one line within rounding).
 std::optional<PlaneFit> fit_plane(std::span<const Vec3> points, const Vec3& facing);
 
-/// The plane most of the points lie on, where a few lie off it: a flat face's vertices with
-/// those a mesher put off the face beside its edges (OpenVDB's, where it interpolates the
-/// signed distance across a concave corner, up to a quarter of a pitch off over two or three
-/// cells). From `first`, their least-squares plane, the tenth of the points kept farthest from
-/// the last plane is dropped and the rest fitted again, until they scatter about their plane by
-/// at most `exact` (root mean square): that fit, of the points kept, is given. None where that
-/// would leave fewer than half the points, or fewer than `min_points`: points on a curved face
-/// lie on no plane, and a narrow strip of them near one does not hold half; nor where the
-/// points kept lie on two parallel lines (two values or fewer, 10 exact apart, across the line
-/// through the first point and the most others): any two such lines lie in a plane, as two
-/// columns of the vertices surface nets leave down a hole along a grid axis do (without this
-/// test 142 of the 165 vertices between patches of the pocketed block of the tests reached their
-/// edge, against 157 or more with it; which patch it refused there was not traced). `kept` is
-/// scratch, reused from call to call.
+/// The plane most of the points lie on, where a few lie off it. From `first`, their
+/// least-squares plane, the tenth of the points kept farthest from the last plane is dropped and
+/// the rest fitted again, until they scatter about their plane by at most `exact` (root mean
+/// square): that fit, of the points kept (left in `kept`), is given. None where that would leave
+/// fewer than half the points, or fewer than `min_points`: points on a curved face lie on no
+/// plane, and a narrow strip of them near one does not hold half.
+std::optional<PlaneFit> fit_plane_trimmed(std::span<const Vec3> points, const Vec3& facing,
+                                          const PlaneFit& first, double exact,
+                                          std::size_t min_points, std::vector<Vec3>& kept);
+
+/// fit_plane_trimmed() as a face's plane: a flat face's vertices with those a mesher put off the
+/// face beside its edges (OpenVDB's, where it interpolates the signed distance across a concave
+/// corner, up to a quarter of a pitch off over two or three cells). None also where the points
+/// kept lie on two parallel lines (two values or fewer, 10 exact apart, across the line through
+/// the first point and the most others): any two such lines lie in a plane, as two columns of the
+/// vertices surface nets leave down a hole along a grid axis do (without this test 142 of the
+/// 165 vertices between patches of the pocketed block of the tests reached their edge, against
+/// 157 or more with it; which patch it refused there was not traced). `kept` is scratch, reused
+/// from call to call.
 std::optional<PlaneFit> fit_plane_of_most(std::span<const Vec3> points, const Vec3& facing,
                                           const PlaneFit& first, double exact,
                                           std::size_t min_points, std::vector<Vec3>& kept);
