@@ -23,8 +23,11 @@ constexpr double kBevelReach = 2.0;
 /// The share of a bevel's vertices that may fail that: where it ends at a side of the part, its
 /// last vertices lie in the corner with that side, beside or behind the edge's faces.
 constexpr double kBevelEndShare = 0.1;
-/// A strip two or three rows wide has at most about this many vertices per pitch of its length.
-constexpr double kStripRows = 4.0;
+/// A strip two or three rows wide has at most about four vertices per pitch of its length, and
+/// its length is up to sqrt(2) times its bounding box's diagonal where it turns a corner (mech's
+/// floor bevel along two walls of a pocket, one patch round its rounded corner: 452 vertices on
+/// a diagonal of 109 pitches): at most this many per pitch of that diagonal.
+constexpr double kStripRows = 6.0;
 /// A side that is not flat as a whole (a pocket's walls, one patch around its rounded corners)
 /// is fitted by its vertices within this many pitches of the strip's long axis: the rows beside
 /// the bevel, past the band, where the wall runs straight along it.
@@ -299,25 +302,31 @@ Index most_faces_around(const Connectivity& connectivity, const std::vector<Inde
     return best;
 }
 
-/// The faces to dissolve with the bevels of `across` (per patch id: the corner a bevel lies
-/// across, none for the others): the bevels' own, and those reached from them across edges that
-/// lie in the bevel's corner off its faces (ConcaveCorner::holds_face()), whatever their patch.
-/// OpenVDB's bevel across mech's pocket floor edges (y = 14, z = 19 at pitch 0.5 mm) runs floor,
-/// a row at 16 degrees, the bevel's two rows at 45, a row at 74, wall: the row at 74 degrees
-/// grew into the patch of the next wall round the pocket's corner, and left there it gave the
-/// bevel's vertices three patches around them, one with no plane nearby: they stayed where they
-/// were, with no crease left along the edge. Bound: each face once.
-std::vector<std::uint8_t> faces_in_bevel_corners(
-    const InputSurface& current, const std::vector<Index>& face_patch,
-    const std::vector<std::optional<ConcaveCorner>>& across, double tolerance, double reach) {
+/// A bevel found: the faces it holds (a whole strip's, or a piece's) and the corner it lies across.
+struct Bevel {
+    std::vector<Index> faces;
+    ConcaveCorner corner;
+};
+
+/// The faces to dissolve with the bevels: their own, and those reached from them across edges
+/// that lie in the bevel's corner off its faces (ConcaveCorner::holds_face()), whatever their
+/// patch. OpenVDB's bevel across mech's pocket floor edges (y = 14, z = 19 at pitch 0.5 mm) runs
+/// floor, a row at 16 degrees, the bevel's two rows at 45, a row at 74, wall: the row at 74
+/// degrees grew into the patch of the next wall round the pocket's corner, and left there it gave
+/// the bevel's vertices three patches around them, one with no plane nearby: they stayed where
+/// they were, with no crease left along the edge. Bound: each face once.
+std::vector<std::uint8_t> faces_in_bevel_corners(const InputSurface& current,
+                                                 const std::vector<Index>& face_patch,
+                                                 const std::vector<Bevel>& bevels, double tolerance,
+                                                 double reach) {
     const Mesh& mesh = current.mesh;
     std::vector<std::uint8_t> taken(mesh.face_count(), 0);
     std::vector<std::pair<Index, const ConcaveCorner*>> open;
-    for (Index f = 0; f < mesh.face_count(); ++f) {
-        const Index p = face_patch[f];
-        if (p == kNoIndex || p >= across.size() || !across[p]) continue;
-        taken[f] = 1;
-        open.emplace_back(f, &*across[p]);
+    for (const Bevel& bevel : bevels) {
+        for (Index f : bevel.faces) {
+            taken[f] = 1;
+            open.emplace_back(f, &bevel.corner);
+        }
     }
     while (!open.empty()) {
         const auto [f, corner] = open.back();
@@ -336,65 +345,128 @@ std::vector<std::uint8_t> faces_in_bevel_corners(
     return taken;
 }
 
-/// Per patch id, the concave corner the strip of that patch lies across, for each strip that has
-/// a plane (`whole`, per patch id) and is a bevel; none for the others. The sides are the patches
-/// within two steps of the strip, each with its plane as a whole, or where it has none (a pocket's
-/// walls round its rounded corners), the plane of its vertices along the strip; a bevel faces the
-/// same way as both of two sides that meet at a concave edge, and all but kBevelEndShare of its
-/// vertices lie in their corner within kBevelReach. Bound: per strip, a plane fit for each
-/// side with none as a whole, and a test per pair of sides.
-std::vector<std::optional<ConcaveCorner>> bevel_corners(
-    const InputSurface& current, const FeatureSegmentation& features,
-    const std::vector<std::uint8_t>& in_band, const PatchMembers& strips_members,
-    const std::vector<std::optional<PlaneFit>>& whole, const VertexMoveOptions& options, double h) {
-    const std::size_t patches = features.patch_count;
-    const double scatter = options.max_scatter_near * h;
-    const auto min_points = static_cast<std::size_t>(options.min_fit_points);
-    const double min_angle_cosine = std::cos(options.junction_angle_deg * std::numbers::pi / 180.0);
-    const std::vector<std::vector<Index>> around = neighbouring_patches(current.mesh, features);
-    // The faces a flat strip may lie across, each with its plane as a side (its vertices off
-    // the bands, which lie on its face).
-    std::vector<std::vector<Index>> sides(patches);
-    std::vector<std::uint8_t> wanted(patches, 0);
-    for (std::size_t p = 0; p < patches; ++p) {
-        if (!whole[p]) continue;
-        sides[p] = within_two_steps(around, static_cast<Index>(p));
-        for (Index q : sides[p]) wanted[q] = 1;
-    }
-    const PatchMembers members = patch_members(current.mesh, features, in_band, wanted);
-    std::vector<std::optional<PlaneFit>> side(patches);
-    for_each_index(patches, 1, [&](std::size_t p) {
-        if (wanted[p]) side[p] = flat_plane(current, members.off_band[p], min_points, scatter);
-    });
-    std::vector<std::optional<ConcaveCorner>> across(patches);
-    for_each_index(patches, 1, [&](std::size_t p) {
-        if (!whole[p]) return;
-        const std::vector<Index>& next = sides[p];
-        const StripAxis axis =
-            strip_axis(current.mesh, strips_members.all[p], whole[p]->plane, scatter);
-        std::vector<std::optional<PlaneFit>> plane(next.size());
-        for (std::size_t i = 0; i < next.size(); ++i) {
-            plane[i] = side[next[i]] ? side[next[i]]
-                                     : flat_plane_near(current, members.off_band[next[i]], axis,
-                                                       kLocalSideReach * h, min_points, scatter);
+/// Judges strips, or pieces of them, as bevels: the sides of a strip are the patches within two
+/// steps of it, each with its plane as a whole, or where it has none (a pocket's walls round its
+/// rounded corners), the plane of its vertices along the strip (flat_plane_near()); a bevel faces
+/// the same way as both of two sides that meet at a concave edge, and all but kBevelEndShare of
+/// its vertices lie in their corner within kBevelReach pitches.
+class BevelJudge {
+public:
+    /// `strip`: per patch id, the patches to judge (strips()).
+    BevelJudge(const InputSurface& current, const FeatureSegmentation& features,
+               const std::vector<std::uint8_t>& in_band, const std::vector<std::uint8_t>& strip,
+               const VertexMoveOptions& options, double h)
+        : current_(current),
+          h_(h),
+          scatter_(options.max_scatter_near * h),
+          min_points_(static_cast<std::size_t>(options.min_fit_points)),
+          min_angle_cosine_(std::cos(options.junction_angle_deg * std::numbers::pi / 180.0)),
+          sides_(features.patch_count) {
+        const std::vector<std::vector<Index>> around = neighbouring_patches(current.mesh, features);
+        std::vector<std::uint8_t> wanted(features.patch_count, 0);
+        for (std::size_t p = 0; p < features.patch_count; ++p) {
+            if (!strip[p]) continue;
+            sides_[p] = within_two_steps(around, static_cast<Index>(p));
+            for (Index q : sides_[p]) wanted[q] = 1;
         }
-        const Vec3& own = whole[p]->plane.normal;
-        for (std::size_t i = 0; i < next.size() && !across[p]; ++i) {
-            for (std::size_t j = i + 1; j < next.size() && !across[p]; ++j) {
-                if (!plane[i] || !plane[j]) continue;
+        members_ = patch_members(current.mesh, features, in_band, wanted);
+        side_plane_.resize(features.patch_count);
+        for_each_index(features.patch_count, 1, [&](std::size_t p) {
+            if (wanted[p])
+                side_plane_[p] = flat_plane(current, members_.off_band[p], min_points_, scatter_);
+        });
+    }
+
+    /// The corner that the strip of patch p, or a piece of it (its `vertices`, on `plane`), lies
+    /// across as a bevel; none if it is no bevel. Bound: a plane fit for each side with none as
+    /// a whole, and a test per pair of sides.
+    std::optional<ConcaveCorner> corner_across(Index p, const std::vector<Index>& vertices,
+                                               const PlaneFit& plane) const {
+        const std::vector<Index>& next = sides_[p];
+        const StripAxis axis = strip_axis(current_.mesh, vertices, plane.plane, scatter_);
+        std::vector<std::optional<PlaneFit>> side(next.size());
+        for (std::size_t i = 0; i < next.size(); ++i) {
+            side[i] = side_plane_[next[i]]
+                          ? side_plane_[next[i]]
+                          : flat_plane_near(current_, members_.off_band[next[i]], axis,
+                                            kLocalSideReach * h_, min_points_, scatter_);
+        }
+        const Vec3& own = plane.plane.normal;
+        for (std::size_t i = 0; i < next.size(); ++i) {
+            for (std::size_t j = i + 1; j < next.size(); ++j) {
+                if (!side[i] || !side[j]) continue;
                 // The bevel faces the same way as both faces: it lies across their corner.
-                if (own.dot(plane[i]->plane.normal) <= 0.0 ||
-                    own.dot(plane[j]->plane.normal) <= 0.0)
+                if (own.dot(side[i]->plane.normal) <= 0.0 || own.dot(side[j]->plane.normal) <= 0.0)
                     continue;
                 const std::optional<ConcaveCorner> corner =
-                    concave_corner(*plane[i], *plane[j], min_angle_cosine);
-                if (corner && mostly_in_corner(current, strips_members.all[p], *corner, scatter,
-                                               kBevelReach * h))
-                    across[p] = corner;
+                    concave_corner(*side[i], *side[j], min_angle_cosine_);
+                if (corner &&
+                    mostly_in_corner(current_, vertices, *corner, scatter_, kBevelReach * h_))
+                    return corner;
             }
         }
-    });
-    return across;
+        return std::nullopt;
+    }
+
+    /// The plane of a strip's or a piece's vertices as a bevel's (MostOf::Bevel).
+    std::optional<PlaneFit> bevel_plane(const std::vector<Index>& vertices) const {
+        return plane_of_most(current_, vertices, min_points_, scatter_, MostOf::Bevel);
+    }
+
+private:
+    const InputSurface& current_;
+    double h_, scatter_;
+    std::size_t min_points_;
+    double min_angle_cosine_;
+    std::vector<std::vector<Index>> sides_;
+    PatchMembers members_;
+    std::vector<std::optional<PlaneFit>> side_plane_;
+};
+
+/// Normals within this angle (degrees) of a piece's first face keep to the piece: a bevel's rows
+/// part by a few degrees, the legs of a bevel that turns a pocket's corner by 90.
+constexpr double kPieceAngleDeg = 20.0;
+
+/// The faces of `patch` in pieces: from its lowest face not yet in a piece, the faces reached
+/// across its edges within the patch whose normals lie within kPieceAngleDeg of that face's. A
+/// strip that turns a corner (mech's floor bevel along the walls x = 32 and y = 52 round the
+/// pocket's rounded corner, one patch) lies on no plane; each of its legs does. Bound: each
+/// face of the patch once.
+std::vector<std::vector<Index>> pieces_of(const InputSurface& current,
+                                          const std::vector<Index>& face_patch,
+                                          const std::vector<Index>& faces, Index patch) {
+    const double min_cosine = std::cos(kPieceAngleDeg * std::numbers::pi / 180.0);
+    std::vector<std::uint8_t> placed(current.mesh.face_count(), 0);
+    std::vector<std::vector<Index>> pieces;
+    for (Index seed : faces) {
+        if (placed[seed]) continue;
+        const Vec3& normal = current.normals.face[seed];
+        std::vector<Index> piece{seed};
+        placed[seed] = 1;
+        for (std::size_t i = 0; i < piece.size(); ++i) {
+            for (Index k = 0; k < 3; ++k) {
+                const Index twin = current.connectivity.twin[3 * piece[i] + k];
+                if (twin == kNoIndex) continue;
+                const Index g = face_of(twin);
+                if (placed[g] || face_patch[g] != patch) continue;
+                if (current.normals.face[g].dot(normal) < min_cosine) continue;
+                placed[g] = 1;
+                piece.push_back(g);
+            }
+        }
+        pieces.push_back(std::move(piece));
+    }
+    return pieces;
+}
+
+/// The corners of the faces listed, each once, ascending.
+std::vector<Index> corners_of(const Mesh& mesh, const std::vector<Index>& faces) {
+    std::vector<Index> corners;
+    for (Index f : faces)
+        corners.insert(corners.end(), mesh.triangles[f].begin(), mesh.triangles[f].end());
+    std::sort(corners.begin(), corners.end());
+    corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+    return corners;
 }
 
 /// Takes the faces flagged in `taken` out of their patches in `features`, and gives a new patch
@@ -426,6 +498,20 @@ void dissolve(const InputSurface& current, const std::vector<std::uint8_t>& take
     }
 }
 
+/// The pieces (pieces_of()) of a strip that is no bevel as a whole that are bevels, into
+/// `bevels`. Bound: per piece, a plane fit and BevelJudge::corner_across().
+void add_bevel_pieces(const InputSurface& current, const std::vector<Index>& face_patch,
+                      const BevelJudge& judge, Index patch, const std::vector<Index>& faces,
+                      std::vector<Bevel>& bevels) {
+    for (std::vector<Index>& piece : pieces_of(current, face_patch, faces, patch)) {
+        const std::vector<Index> vertices = corners_of(current.mesh, piece);
+        const std::optional<PlaneFit> plane = judge.bevel_plane(vertices);
+        if (!plane) continue;
+        const std::optional<ConcaveCorner> corner = judge.corner_across(patch, vertices, *plane);
+        if (corner) bevels.push_back({std::move(piece), *corner});
+    }
+}
+
 }  // namespace
 
 BevelDissolution without_concave_bevels(const InputSurface& current, FeatureSegmentation features,
@@ -448,16 +534,35 @@ BevelDissolution without_concave_bevels(const InputSurface& current, FeatureSegm
             whole[p] =
                 plane_of_most(current, strips_members.all[p], min_points, scatter, MostOf::Bevel);
     });
-    const std::vector<std::optional<ConcaveCorner>> across =
-        bevel_corners(current, features, in_band, strips_members, whole, options, h);
+    const BevelJudge judge(current, features, in_band, strip, options, h);
+    std::vector<std::optional<ConcaveCorner>> across(patches);
+    for_each_index(patches, 1, [&](std::size_t p) {
+        if (whole[p])
+            across[p] =
+                judge.corner_across(static_cast<Index>(p), strips_members.all[p], *whole[p]);
+    });
+    std::vector<std::vector<Index>> faces_of(patches);
+    for (Index f = 0; f < current.mesh.face_count(); ++f) {
+        const Index p = features.face_patch[f];
+        if (p != kNoIndex && p < patches && strip[p]) faces_of[p].push_back(f);
+    }
+    std::vector<Bevel> bevels;
     std::vector<std::uint8_t> bevel(patches, 0);
-    for (std::size_t p = 0; p < patches; ++p) bevel[p] = across[p].has_value();
+    for (std::size_t p = 0; p < patches; ++p) {
+        if (across[p]) {
+            bevel[p] = 1;
+            bevels.push_back({faces_of[p], *across[p]});
+        } else if (strip[p]) {
+            add_bevel_pieces(current, features.face_patch, judge, static_cast<Index>(p),
+                             faces_of[p], bevels);
+        }
+    }
     BevelDissolution r{std::move(features), 0};
-    r.bevels = static_cast<std::size_t>(std::count(bevel.begin(), bevel.end(), 1));
+    r.bevels = bevels.size();
     if (r.bevels == 0) return r;
     dissolve(
         current,
-        faces_in_bevel_corners(current, r.features.face_patch, across, scatter, kBevelReach * h),
+        faces_in_bevel_corners(current, r.features.face_patch, bevels, scatter, kBevelReach * h),
         bevel, r.features);
     return r;
 }

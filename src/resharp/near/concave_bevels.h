@@ -24,26 +24,29 @@ namespace resharp {
 
 struct BevelDissolution {
     FeatureSegmentation features;  ///< the segmentation given, the bevels' patches dissolved
-    std::size_t bevels = 0;        ///< patches dissolved
+    /// bevels dissolved: strips' patches, and pieces of strips that turn a corner
+    std::size_t bevels = 0;
 };
 
 /// Takes the mesh as it stands, its feature segmentation (taken over: most meshes have no bevel,
 /// and a copy was 6 bytes a face of fresh memory) and bands, and the grid its vertices were
-/// placed on; gives the segmentation with every concave bevel's patch dissolved (its faces
-/// in no patch, and with them the faces reached from them whose corners all lie in the bevel's
-/// corner, whatever their patch: a row beside the bevel that grew into a face's patch; a vertex
-/// keeps its patch while a face around it has it, else takes the patch with the most faces
-/// around it, none if no other): a patch whose vertices lie about one plane (within
-/// options.max_scatter_near pitches, rms, or most of them to a tenth of that: a bevel that bends
-/// round a pocket's rounded corners at its ends) between the planes of two patches next to it or
-/// next to those (each fitted to its vertices off the bands, as flat, or where a patch has no
-/// plane as a whole, to those along the strip: a pocket's walls round its rounded corners),
-/// parting by more than options.junction_angle_deg at a concave edge, all but a tenth of its
-/// vertices (where it ends at the part's sides) in front of both planes and within two pitches
-/// of where they meet. Each patch is judged on the segmentation given, so the result does not
-/// depend on the order they are judged in. Bound: a pass over the vertices and faces, a plane
-/// fit per patch, per patch a test per pair of the patches within two steps of it (with a fit
-/// along it for each of those with no plane as a whole), and each face once in the spread.
+/// placed on; gives the segmentation with every concave bevel dissolved (its faces in no patch,
+/// and with them the faces reached from them whose corners all lie in the bevel's corner, not all
+/// on one of its faces, whatever their patch: a row beside the bevel that grew into a face's
+/// patch; a vertex keeps its patch while a face around it has it, else takes the patch with the
+/// most faces around it, none if no other). A bevel is a strip (a patch with few vertices for its
+/// size), or where a strip is none as a whole, a piece of it whose faces' normals lie near one
+/// another (a strip that turns a pocket's corner), whose vertices lie about one plane (within
+/// options.max_scatter_near pitches, rms, most of them: its ends bend round a pocket's rounded
+/// corners) between the planes of two patches next to the strip or next to those (each fitted to
+/// its vertices off the bands, as flat, or where a patch has no plane as a whole, to those along
+/// the strip: a pocket's walls round its rounded corners), parting by more than
+/// options.junction_angle_deg at a concave edge, all but a tenth of its vertices (where it ends
+/// at the part's sides) in front of both planes and within two pitches of where they meet. Each
+/// patch is judged on the segmentation given, so the result does not depend on the order they
+/// are judged in. Bound: a pass over the vertices and faces, a plane fit per patch, per strip
+/// (or piece) a test per pair of the patches within two steps of it (with a fit along it for each
+/// of those with no plane as a whole), and each face once in the spread.
 BevelDissolution without_concave_bevels(const InputSurface& current, FeatureSegmentation features,
                                         const BandClassification& bands, const Grid& grid,
                                         const VertexMoveOptions& options = {});

@@ -95,8 +95,8 @@ struct RestoreReport {
     /// Restorations of a moved mesh checked against the input: 1 where vertices were to move
     /// (the moves the harm check gives up are given up within it), else 0.
     std::size_t move_rounds = 0;
-    /// Near: patches taken for a dual mesher's bevel across a concave edge and given back to the
-    /// band before the moves (near/concave_bevels.h).
+    /// Near: patches, or pieces of patches, taken for a dual mesher's bevel across a concave edge
+    /// and given back to the band before the moves (near/concave_bevels.h).
     std::size_t bevels_dissolved = 0;
 
     /// Mesher artefacts (MeshRepairOptions).
