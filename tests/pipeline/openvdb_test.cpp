@@ -577,26 +577,52 @@ TEST(OpenVdbMesher, APocketsCornersComeBack) {
     EXPECT_LE(unmoved_between_patches, 160);
 }
 
-/// A block with a pocket whose corners are rounded (a flat-end mill's, radius 2 mm), its walls
-/// x = 3.37 and 21.37, y = 2.79 and 17.79, its floor z = 4.41; sampled by the simulator at kPitch
-/// / 4. The pocket's walls are one curved patch round its corners, as mech's are.
-Mesh pocket_with_rounded_corners() {
-    const sim::CsgSolid solid(sim::parse_csg(R"({"solid": {"difference": [
-        {"box": {"min": [0.37, 0.29, 0.41], "max": [24.37, 20.29, 12.41]}},
-        {"union": [
-            {"box": {"min": [5.37, 2.79, 4.41], "max": [19.37, 17.79, 13.0]}},
-            {"box": {"min": [3.37, 4.79, 4.41], "max": [21.37, 15.79, 13.0]}},
-            {"cylinder": {"from": [5.37, 4.79, 4.41], "to": [5.37, 4.79, 13.0], "radius": 2.0}},
-            {"cylinder": {"from": [19.37, 4.79, 4.41], "to": [19.37, 4.79, 13.0], "radius": 2.0}},
-            {"cylinder": {"from": [5.37, 15.79, 4.41], "to": [5.37, 15.79, 13.0], "radius": 2.0}},
-            {"cylinder": {"from": [19.37, 15.79, 4.41], "to": [19.37, 15.79, 13.0], "radius": 2.0}}
-        ]}
-    ]}})",
-                                             "pocket with rounded corners"));
-    const sim::DexelGrid grid =
-        sim::sample_solid(sim::phased_grid(solid.bounds(), kPitch / 4, 0.4142), solid);
-    return sim::mesh_dexels(grid, {}).mesh;
-}
+/// A pocket with rounded corners (a flat-end mill's) in the block [0.37, block_high.x()] x
+/// [0.29, block_high.y()] x [0.41, 12.41]: its walls x = low.x() and high.x(), y = low.y() and
+/// high.y(), its floor z = floor, open at the top. Its walls are one curved patch round its
+/// corners, as mech's are.
+struct RoundedPocket {
+    Eigen::Vector2d block_high, low, high;
+    double floor = 0.0, radius = 0.0;
+
+    /// The block sampled by the simulator at kPitch / 4.
+    Mesh sampled() const {
+        const auto point = [](double x, double y, double z) {
+            return "[" + std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(z) +
+                   "]";
+        };
+        const auto box = [&](double x0, double y0, double x1, double y1) {
+            return R"({"box": {"min": )" + point(x0, y0, floor) + R"(, "max": )" +
+                   point(x1, y1, 13.0) + "}}";
+        };
+        const double r = radius;
+        std::string corners;
+        for (const double x : {low.x() + r, high.x() - r}) {
+            for (const double y : {low.y() + r, high.y() - r}) {
+                corners += R"(, {"cylinder": {"from": )" + point(x, y, floor) + R"(, "to": )" +
+                           point(x, y, 13.0) + R"(, "radius": )" + std::to_string(r) + "}}";
+            }
+        }
+        const sim::CsgSolid solid(sim::parse_csg(
+            R"({"solid": {"difference": [{"box": {"min": [0.37, 0.29, 0.41], "max": )" +
+                point(block_high.x(), block_high.y(), 12.41) + R"(}}, {"union": [)" +
+                box(low.x() + r, low.y(), high.x() - r, high.y()) + ", " +
+                box(low.x(), low.y() + r, high.x(), high.y() - r) + corners + "]}]}}",
+            "pocket with rounded corners"));
+        const sim::DexelGrid grid =
+            sim::sample_solid(sim::phased_grid(solid.bounds(), kPitch / 4, 0.4142), solid);
+        return sim::mesh_dexels(grid, {}).mesh;
+    }
+
+    /// The straight parts of the floor's four edges, a pitch short of the rounded corners.
+    std::vector<std::pair<Vec3, Vec3>> straight_floor_edges() const {
+        const double r = radius + kPitch, z = floor;
+        return {{{low.x(), low.y() + r, z}, {low.x(), high.y() - r, z}},
+                {{high.x(), low.y() + r, z}, {high.x(), high.y() - r, z}},
+                {{low.x() + r, low.y(), z}, {high.x() - r, low.y(), z}},
+                {{low.x() + r, high.y(), z}, {high.x() - r, high.y(), z}}};
+    }
+};
 
 // OpenVDB bevels the floor edges of a pocket whose walls are one curved patch round its rounded
 // corners (mech's pockets). The bevel's plane was judged against the walls' as a whole, which
@@ -611,14 +637,11 @@ Mesh pocket_with_rounded_corners() {
 // between the voxel centres (0.29 pitch past them), none of the four before, 0.66 to 0.78 of each
 // after.
 TEST(OpenVdbMesher, ThePocketFloorsEdgesBesideWallsRoundItsCornersComeBack) {
-    const Mesh fine = pocket_with_rounded_corners();
+    const RoundedPocket pocket{{24.37, 20.29}, {3.37, 2.79}, {21.37, 17.79}, 4.41, 2.0};
+    const Mesh fine = pocket.sampled();
     const RestoreOptions options;
-    const double z = 4.41, tolerance = 0.1 * kPitch;
-    const std::vector<std::pair<Vec3, Vec3>> edges{
-        {{3.37, 4.79 + kPitch, z}, {3.37, 15.79 - kPitch, z}},
-        {{21.37, 4.79 + kPitch, z}, {21.37, 15.79 - kPitch, z}},
-        {{5.37 + kPitch, 2.79, z}, {19.37 - kPitch, 2.79, z}},
-        {{5.37 + kPitch, 17.79, z}, {19.37 - kPitch, 17.79, z}}};
+    const double tolerance = 0.1 * kPitch;
+    const std::vector<std::pair<Vec3, Vec3>> edges = pocket.straight_floor_edges();
     const std::vector<Vec3> offsets{Vec3(0.08, 0.0, 0.12), Vec3(0.0, 0.0, 0.0), Vec3(0.2, 0.2, 0.2),
                                     Vec3(0.33, 0.4, 0.05)};
     double summed = 0.0;
@@ -640,27 +663,6 @@ TEST(OpenVdbMesher, ThePocketFloorsEdgesBesideWallsRoundItsCornersComeBack) {
     EXPECT_GT(summed, 5.0);
 }
 
-/// A block with a pocket whose corners are rounded with radius 4 mm, its walls x = 3.37 and
-/// 23.37, y = 2.79 and 21.79, its floor z = 4.29 (each 0.29 mm past a voxel centre of the grid
-/// at the origin, as mech's pocket floor edges lie); sampled by the simulator at kPitch / 4.
-Mesh pocket_with_wide_rounded_corners() {
-    const sim::CsgSolid solid(sim::parse_csg(R"({"solid": {"difference": [
-        {"box": {"min": [0.37, 0.29, 0.41], "max": [28.37, 24.29, 12.41]}},
-        {"union": [
-            {"box": {"min": [7.37, 2.79, 4.29], "max": [19.37, 21.79, 13.0]}},
-            {"box": {"min": [3.37, 6.79, 4.29], "max": [23.37, 17.79, 13.0]}},
-            {"cylinder": {"from": [7.37, 6.79, 4.29], "to": [7.37, 6.79, 13.0], "radius": 4.0}},
-            {"cylinder": {"from": [19.37, 6.79, 4.29], "to": [19.37, 6.79, 13.0], "radius": 4.0}},
-            {"cylinder": {"from": [7.37, 17.79, 4.29], "to": [7.37, 17.79, 13.0], "radius": 4.0}},
-            {"cylinder": {"from": [19.37, 17.79, 4.29], "to": [19.37, 17.79, 13.0], "radius": 4.0}}
-        ]}
-    ]}})",
-                                             "pocket with wide rounded corners"));
-    const sim::DexelGrid grid =
-        sim::sample_solid(sim::phased_grid(solid.bounds(), kPitch / 4, 0.4142), solid);
-    return sim::mesh_dexels(grid, {}).mesh;
-}
-
 // Where a floor bevel's patch runs along two walls round the pocket's rounded corner (mech's
 // floor edges x = 32 and y = 52), it lies on no plane, and it had too many vertices for its
 // bounding box to be taken for a strip: its legs are now judged as bevels one by one. The share
@@ -668,15 +670,13 @@ Mesh pocket_with_wide_rounded_corners() {
 // crease: 0 for three of the four edges before (0.96 for the fourth); 0.74 to 0.96 each when this
 // test was written.
 TEST(OpenVdbMesher, AFloorBevelThatTurnsAPocketsCornerComesBackAlongEachWall) {
-    const Mesh input = extras::openvdb_dual_mesh(pocket_with_wide_rounded_corners(), kPitch);
+    // Each face 0.29 mm past a voxel centre of the grid at the origin, as mech's floor edges lie.
+    const RoundedPocket pocket{{28.37, 24.29}, {3.37, 2.79}, {23.37, 21.79}, 4.29, 4.0};
+    const Mesh input = extras::openvdb_dual_mesh(pocket.sampled(), kPitch);
     const RestoreOptions options;
     const RestoreResult r = restore(input, options);
-    const double z = 4.29, tolerance = 0.1 * kPitch;
-    const std::vector<std::pair<Vec3, Vec3>> edges{
-        {{3.37, 6.79 + kPitch, z}, {3.37, 17.79 - kPitch, z}},
-        {{23.37, 6.79 + kPitch, z}, {23.37, 17.79 - kPitch, z}},
-        {{7.37 + kPitch, 2.79, z}, {19.37 - kPitch, 2.79, z}},
-        {{7.37 + kPitch, 21.79, z}, {19.37 - kPitch, 21.79, z}}};
+    const double tolerance = 0.1 * kPitch;
+    const std::vector<std::pair<Vec3, Vec3>> edges = pocket.straight_floor_edges();
     for (const auto& [a, b] : edges) {
         SCOPED_TRACE(a.transpose());
         EXPECT_GT(share_beside_a_crease(r.mesh, a, b, tolerance), 0.5);
