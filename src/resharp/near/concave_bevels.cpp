@@ -427,30 +427,36 @@ private:
 /// part by a few degrees, the legs of a bevel that turns a pocket's corner by 90.
 constexpr double kPieceAngleDeg = 20.0;
 
-/// The faces of `patch` in pieces: from its lowest face not yet in a piece, the faces reached
-/// across its edges within the patch whose normals lie within kPieceAngleDeg of that face's. A
-/// strip that turns a corner (mech's floor bevel along the walls x = 32 and y = 52 round the
-/// pocket's rounded corner, one patch) lies on no plane; each of its legs does. Bound: each
-/// face of the patch once.
+/// The faces of `patch` (`faces`, ascending) in pieces: from its lowest face not yet in a piece,
+/// the faces reached across its edges within the patch whose normals lie within kPieceAngleDeg of
+/// that face's. A strip that turns a corner (mech's floor bevel along the walls x = 32 and y = 52
+/// round the pocket's rounded corner, one patch) lies on no plane; each of its legs does. Bound:
+/// each face of the patch once, found among them by bisection.
 std::vector<std::vector<Index>> pieces_of(const InputSurface& current,
                                           const std::vector<Index>& face_patch,
                                           const std::vector<Index>& faces, Index patch) {
     const double min_cosine = std::cos(kPieceAngleDeg * std::numbers::pi / 180.0);
-    std::vector<std::uint8_t> placed(current.mesh.face_count(), 0);
+    std::vector<std::uint8_t> placed(faces.size(), 0);  // per entry of `faces`
+    const auto entry = [&](Index f) {
+        return static_cast<std::size_t>(std::lower_bound(faces.begin(), faces.end(), f) -
+                                        faces.begin());
+    };
     std::vector<std::vector<Index>> pieces;
-    for (Index seed : faces) {
-        if (placed[seed]) continue;
-        const Vec3& normal = current.normals.face[seed];
-        std::vector<Index> piece{seed};
-        placed[seed] = 1;
+    for (std::size_t s = 0; s < faces.size(); ++s) {
+        if (placed[s]) continue;
+        const Vec3& normal = current.normals.face[faces[s]];
+        std::vector<Index> piece{faces[s]};
+        placed[s] = 1;
         for (std::size_t i = 0; i < piece.size(); ++i) {
             for (Index k = 0; k < 3; ++k) {
                 const Index twin = current.connectivity.twin[3 * piece[i] + k];
                 if (twin == kNoIndex) continue;
                 const Index g = face_of(twin);
-                if (placed[g] || face_patch[g] != patch) continue;
-                if (current.normals.face[g].dot(normal) < min_cosine) continue;
-                placed[g] = 1;
+                if (face_patch[g] != patch || current.normals.face[g].dot(normal) < min_cosine)
+                    continue;
+                const std::size_t e = entry(g);
+                if (placed[e]) continue;
+                placed[e] = 1;
                 piece.push_back(g);
             }
         }
