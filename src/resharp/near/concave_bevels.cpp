@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -35,7 +36,7 @@ constexpr double kLocalSideReach = 5.0;
 /// The plane most of a side's vertices lie on holds them to this share of the scatter allowed a
 /// flat fit: a face's vertices off the bands lie on it to rounding, and the full scatter would
 /// let the test of two lines (ten times this apart) take three rows of a face for two.
-constexpr double kOnBevelPlane = 0.1;
+constexpr double kOnSidePlane = 0.1;
 
 /// Per patch id, whether it could be a strip a few rows wide: no more vertices than kStripRows
 /// per pitch of its bounding box's diagonal (a face of side L has about (L / h)^2), and enough
@@ -154,7 +155,7 @@ enum class MostOf {
     /// bevel are a plane.
     Bevel,
     /// A face beside a bevel (a pocket's walls, straight along it but curved round the corners):
-    /// the plane most of its vertices lie on to kOnBevelPlane of that scatter, not two lines
+    /// the plane most of its vertices lie on to kOnSidePlane of that scatter, not two lines
     /// (fit_plane_of_most()).
     Face,
 };
@@ -171,7 +172,7 @@ std::optional<PlaneFit> plane_of_most(const InputSurface& current,
     std::vector<Vec3> kept;
     return kind == MostOf::Bevel
                ? fit_plane_trimmed(p.points, p.facing, *all, scatter, min_points, kept)
-               : fit_plane_of_most(p.points, p.facing, *all, kOnBevelPlane * scatter, min_points,
+               : fit_plane_of_most(p.points, p.facing, *all, kOnSidePlane * scatter, min_points,
                                    kept);
 }
 
@@ -217,8 +218,8 @@ StripAxis strip_axis(const Mesh& mesh, const std::vector<Index>& vertices, const
     return axis;
 }
 
-/// The plane of the vertices listed within `reach` of the strip's axis, as flat_plane() gives
-/// it.
+/// The plane of the vertices listed within `reach` of the strip's axis: the plane most of them
+/// lie on, as a face's (plane_of_most(), MostOf::Face).
 std::optional<PlaneFit> flat_plane_near(const InputSurface& current,
                                         const std::vector<Index>& vertices, const StripAxis& axis,
                                         double reach, std::size_t min_points, double scatter) {
@@ -483,19 +484,20 @@ std::vector<Index> corners_of(const Mesh& mesh, const std::vector<Index>& faces)
 /// before, and a vertex's new patch reads the faces' alone.
 void dissolve(const InputSurface& current, const std::vector<std::uint8_t>& taken,
               const std::vector<std::uint8_t>& bevel, FeatureSegmentation& features) {
-    const std::vector<Index> before = features.face_patch;
+    // Per vertex, whether a face taken had its patch: flags, not a copy of the faces' patches.
+    std::vector<std::uint8_t> lost(current.mesh.vertex_count(), 0);
     for (Index f = 0; f < current.mesh.face_count(); ++f) {
-        if (taken[f]) features.face_patch[f] = kNoIndex;
+        if (!taken[f]) continue;
+        for (Index v : current.mesh.triangles[f])
+            lost[v] |=
+                static_cast<std::uint8_t>(features.vertex_patch[v] == features.face_patch[f]);
+        features.face_patch[f] = kNoIndex;
     }
     std::vector<std::pair<Index, int>> counts;
     for (Index v = 0; v < current.mesh.vertex_count(); ++v) {
         const Index p = features.vertex_patch[v];
-        if (p == kNoIndex || p >= bevel.size()) continue;
+        if (p == kNoIndex || p >= bevel.size() || !(lost[v] || bevel[p])) continue;
         const auto ring = current.connectivity.faces_around(v);
-        const bool lost = bevel[p] || std::any_of(ring.begin(), ring.end(), [&](Index f) {
-                              return taken[f] && before[f] == p;
-                          });
-        if (!lost) continue;
         const bool kept = std::any_of(ring.begin(), ring.end(),
                                       [&](Index f) { return features.face_patch[f] == p; });
         if (!kept)
