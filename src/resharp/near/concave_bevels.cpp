@@ -531,23 +531,18 @@ BevelDissolution without_concave_bevels(const InputSurface& current, FeatureSegm
     const std::size_t patches = features.patch_count;
     const std::vector<std::uint8_t> strip = strips(current, features, h, min_points);
     if (std::find(strip.begin(), strip.end(), 1) == strip.end()) return {std::move(features), 0};
+    const std::vector<std::uint8_t> in_band = band_vertices(current.mesh, bands);
+    const PatchMembers strips_members = patch_members(current.mesh, features, in_band, strip);
+    const BevelJudge judge(current, features, in_band, strip, options, h);
     // A strip's plane as a bevel: of all its vertices (those off the bands run along its middle,
     // on one line, and a bevel's ends, where it meets the next one's at a corner, part from its
     // plane by a few hundredths of a pitch, or bend round a pocket's rounded corner).
-    const std::vector<std::uint8_t> in_band = band_vertices(current.mesh, bands);
-    const PatchMembers strips_members = patch_members(current.mesh, features, in_band, strip);
-    std::vector<std::optional<PlaneFit>> whole(patches);
-    for_each_index(patches, 1, [&](std::size_t p) {
-        if (strip[p])
-            whole[p] =
-                plane_of_most(current, strips_members.all[p], min_points, scatter, MostOf::Bevel);
-    });
-    const BevelJudge judge(current, features, in_band, strip, options, h);
     std::vector<std::optional<ConcaveCorner>> across(patches);
     for_each_index(patches, 1, [&](std::size_t p) {
-        if (whole[p])
-            across[p] =
-                judge.corner_across(static_cast<Index>(p), strips_members.all[p], *whole[p]);
+        if (!strip[p]) return;
+        const std::vector<Index>& vertices = strips_members.all[p];
+        const std::optional<PlaneFit> plane = judge.bevel_plane(vertices);
+        if (plane) across[p] = judge.corner_across(static_cast<Index>(p), vertices, *plane);
     });
     std::vector<std::vector<Index>> faces_of(patches);
     for (Index f = 0; f < current.mesh.face_count(); ++f) {
@@ -559,7 +554,7 @@ BevelDissolution without_concave_bevels(const InputSurface& current, FeatureSegm
     for (std::size_t p = 0; p < patches; ++p) {
         if (across[p]) {
             bevel[p] = 1;
-            bevels.push_back({faces_of[p], *across[p]});
+            bevels.push_back({std::move(faces_of[p]), *across[p]});
         } else if (strip[p]) {
             add_bevel_pieces(current, features.face_patch, judge, static_cast<Index>(p),
                              faces_of[p], bevels);
