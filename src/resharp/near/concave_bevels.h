@@ -42,7 +42,8 @@ struct BevelDissolution {
 /// its vertices off the bands, as flat, or where a patch has no plane as a whole, to those along
 /// the strip: a pocket's walls round its rounded corners), parting by more than
 /// options.junction_angle_deg at a concave edge, all but a tenth of its vertices (where it ends
-/// at the part's sides) in front of both planes and within two pitches of where they meet. Each
+/// at the part's sides) in front of both planes and within two pitches of where they meet
+/// (farther where they meet at an acute angle, as far as the corner is as wide). Each
 /// patch is judged on the segmentation given, so the result does not depend on the order they
 /// are judged in. Bound: a pass over the vertices and faces, a plane fit per patch, per strip
 /// (or piece) a test per pair of the patches within two steps of it (with a fit along it for each

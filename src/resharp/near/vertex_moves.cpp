@@ -15,6 +15,7 @@
 #include "resharp/core/errors.h"
 #include "resharp/core/parallel.h"
 #include "resharp/mesh/geometry.h"
+#include "resharp/near/occupied_cells.h"
 #include "resharp/surfaces/local_quadric.h"
 #include "resharp/surfaces/plane_fit.h"
 
@@ -115,6 +116,10 @@ constexpr double kBendShare = 3.0;
 /// the edge lie within 1.4 pitches of the other face (one cell along, one out), the next on
 /// their face (spool at 100 cells, the hub beside a flange: 1.2 and 1.9 pitches).
 constexpr double kDisplacedRows = 1.5;
+/// Near: how far (in pitches) a vertex in the empty corner of a concave edge may go to stand
+/// for a cell along the edge that its mesher left without a vertex (into_lost_cell()): OpenVDB's
+/// bevel across an edge whose faces open at 60 degrees has its middle row 1.7 pitches from it.
+constexpr double kLostCellReach = 2.0;
 
 /// Near: where a flat face's vertices around a vertex may lie off its plane for it to be taken
 /// as theirs (fit_side()).
@@ -311,7 +316,9 @@ public:
                        : std::vector<std::uint8_t>(current.mesh.vertex_count(), 0)) {
         if (rule.scope != FitScope::Patches) return;
         if (rule.placement == VertexPlacement::Midpoint) patch_plane_ = whole_patch_planes();
-        if (rule.placement == VertexPlacement::Near) flat_face_ = flat_faces();
+        if (rule.placement != VertexPlacement::Near) return;
+        flat_face_ = flat_faces();
+        occupied_.emplace(input, rule.grid);
     }
 
     /// Where v may go; nothing if it stays.
@@ -463,14 +470,17 @@ private:
         if (count < 2 || count > 3) return {};
         const std::span<const Index> around(patches.data(), count);
         Fits fits;
-        if (fit_sides(v, around, OffFace::EitherSide, fits, scratch) < count)
+        if (fit_sides(v, around, OffFace::EitherSide, fits, scratch) < count) {
             fit_missing_farther(v, around, OffFace::EitherSide, fits, scratch);
+            add_flat_faces_in_bands(around, fits, scratch);
+        }
         std::array<PlaneFit, 3> planes;
         for (std::size_t i = 0; i < count; ++i) {
             if (!fits[i]) return on_junction(point_on_curved_junction(v, around, fits, scratch));
             planes[i] = *fits[i];
         }
         const Vec3& x = current_.mesh.positions[v];
+        const std::size_t sides_met = count;
         if (beyond_ring && count == 3 && !corner_within_reach(v, planes))
             count = nearest_two_first(x, planes, patches, fits);
         if (!flat_enough(std::span(planes.data(), count)))
@@ -491,6 +501,10 @@ private:
         const bool off_junction =
             (junction->projection(nearest) - nearest).norm() > on_plane_tolerance();
         if (count == 2 && off_junction && in_front_of_both(x, planes[0], planes[1])) {
+            const std::optional<Vec3> lost =
+                sides_met == 2 ? into_lost_cell(v, *junction, std::span(planes.data(), 2))
+                               : std::nullopt;
+            if (lost) return on_junction(lost);
             const Target onto_face = nearer_face(x, planes, patches, reach);
             if (onto_face.point) return onto_face;
         }
@@ -620,6 +634,39 @@ private:
         Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1> offsets_;
         Eigen::PartialPivLU<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>> gram_;
     };
+
+    /// Near, a vertex between two patches in front of both their planes (the empty corner of a
+    /// concave edge; no third met, as in a pocket's corner) whose junction misses its reach: the
+    /// junction's point nearest it, where that lies within kLostCellReach pitches, in a cell that
+    /// holds no input vertex, nearer v than every vertex of v's ring between patches too (those of
+    /// a patch go onto its face) and out of their reach (junction_reach(): where it lies within
+    /// one's, that one stands for the cell); none elsewhere. A dual mesher puts a vertex in every
+    /// cell the surface crosses where its samples show the crossing. Across a concave edge whose
+    /// faces meet at an acute angle no sample near the edge lies in the empty corner, and OpenVDB
+    /// leaves the cells along it with none: hex_prism's triangular pocket at 100 cells, whose
+    /// corners open at 60 degrees, has its bevel's middle row 1.7 pitches from the edge, two cells
+    /// off, and the cells between empty. The vertex nearest a lost cell stands for it, as in dual
+    /// contouring the vertex of a cell a feature crosses goes onto the feature; the others of the
+    /// bevel's cross-section go onto the faces (nearer_face()), and no two vertices of a face meet
+    /// there.
+    std::optional<Vec3> into_lost_cell(Index v, const Junction& junction,
+                                       std::span<const PlaneFit> planes) const {
+        if (!occupied_) return std::nullopt;
+        const Vec3& x = current_.mesh.positions[v];
+        const Vec3 y = junction.projection(x);
+        const double distance = (y - x).norm();
+        if (distance > kLostCellReach * rule_.grid.pitch || occupied_->holds_vertex(y))
+            return std::nullopt;
+        for (Index f : current_.connectivity.faces_around(v)) {
+            for (Index j : current_.mesh.triangles[f]) {
+                if (j == v || !is_between_patches(j)) continue;
+                if ((y - current_.mesh.positions[j]).norm() <= distance ||
+                    junction_reach(input_[j], planes).holds(y))
+                    return std::nullopt;
+            }
+        }
+        return y;
+    }
 
     /// The point of `junction` nearest v's current place within v's input cell; none where the
     /// junction misses the cell (the cell's point nearest it lies off it by more than the
@@ -989,6 +1036,26 @@ private:
         gather_rings(neighbours_, v, options_.other_side_fit_rings, kMaxOtherSideGathered, scratch);
         for (std::size_t i = 0; i < patches.size(); ++i) {
             if (!fits[i]) fits[i] = fit_side(patches[i], off_face, scratch);
+        }
+    }
+
+    /// Near: to the sides of `patches` that still have no plane, the flat face's plane
+    /// (flat_faces()) where the face's vertices gathered all lie in bands (with_centroid_near()
+    /// of theirs): across a bevel over an acute concave edge a vertex beside one face lies five
+    /// rings and more from the other's vertices off the bands (hex_prism's triangular pocket,
+    /// whose corners open at 60 degrees, at 100 cells by OpenVDB), and without that face's plane
+    /// its junction was taken for one with a curved face: it went to the edge of its cell beside
+    /// the junction, past its neighbour, and turned their faces over.
+    void add_flat_faces_in_bands(std::span<const Index> patches, Fits& fits,
+                                 Scratch& scratch) const {
+        for (std::size_t i = 0; i < patches.size(); ++i) {
+            if (fits[i] || !is_flat_face(patches[i])) continue;
+            scratch.points.clear();
+            for (Index j : scratch.reached) {
+                if (vertex_patch_[j] == patches[i])
+                    scratch.points.push_back(current_.mesh.positions[j]);
+            }
+            if (!scratch.points.empty()) fits[i] = face_plane_near(patches[i], scratch.points);
         }
     }
 
@@ -1770,6 +1837,8 @@ private:
     std::vector<std::optional<PlaneFit>> patch_plane_;
     /// Near, patch scope: per patch id, flat_faces(); empty otherwise.
     std::vector<std::optional<PlaneFit>> flat_face_;
+    /// Near, patch scope: the cells that hold an input vertex; none otherwise.
+    std::optional<OccupiedCells> occupied_;
 };
 
 void validate(const Grid& grid, const VertexMoveOptions& options) {

@@ -102,12 +102,16 @@ struct MoveRule {
 /// on their surface already, up to its curvature), or, where their own gives no such point,
 /// onto another side's that does (VertexMoves::onto_other_patch); a vertex of no patch whose ring
 /// meets two or three patches (those of its ring's vertices, or where they have fewer than two, of
-/// the vertices within the fit rings: the two whose planes lie nearest it) moves onto where their
+/// the vertices within the fit rings: the two whose planes lie nearest it; a flat face whose
+/// vertices there all lie in bands, its plane) moves onto where their
 /// planes meet (the sharp edge or corner; not where its normal runs along an edge's line, on a
 /// third face): the point of it nearest the vertex within its input
 /// cell, or, where it misses that cell, the cell's point nearest it (where the vertex lies in
-/// front of both of two planes, the empty corner of a concave edge, the nearer plane's point
-/// within that reach instead, that plane's patch taken, VertexMoves::onto_other_patch); where
+/// front of both of two planes, the empty corner of a concave edge, the junction's point nearest
+/// it where that lies within two pitches in a cell that holds no input vertex, the vertex being
+/// the nearest to it of those between patches in its ring and it out of their reach: the mesher
+/// lost that cell, and the nearest vertex stands for it; else the nearer plane's point within
+/// that reach, that plane's patch taken, VertexMoves::onto_other_patch); where
 /// no plane crosses the
 /// input cell (the mesher put the vertex where the surface is not, as OpenVDB does across a
 /// concave corner, near/concave_bevels.h), within the cells around it too; three patches met
