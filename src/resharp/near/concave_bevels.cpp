@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -37,6 +38,9 @@ constexpr double kLocalSideReach = 5.0;
 /// flat fit: a face's vertices off the bands lie on it to rounding, and the full scatter would
 /// let the test of two lines (ten times this apart) take three rows of a face for two.
 constexpr double kOnSidePlane = 0.1;
+/// How many rings around a bevel's vertex a curved side's nearest vertex off the bands is sought
+/// in: a bevel two or three rows wide has the faces' rows beside it within three.
+constexpr int kCurvedSideRings = 4;
 
 /// Per patch id, whether it could be a strip a few rows wide: no more vertices than kStripRows
 /// per pitch of its bounding box's diagonal (a face of side L has about (L / h)^2), and enough
@@ -316,10 +320,11 @@ Index most_faces_around(const Connectivity& connectivity, const std::vector<Inde
     return best;
 }
 
-/// A bevel found: the faces it holds (a whole strip's, or a piece's) and the corner it lies across.
+/// A bevel found: the faces it holds (a whole strip's, or a piece's) and the corner it lies
+/// across, where that is one of two planes (none along a curved face).
 struct Bevel {
     std::vector<Index> faces;
-    ConcaveCorner corner;
+    std::optional<ConcaveCorner> corner;
 };
 
 /// The faces to dissolve with the bevels: their own, and those reached from them across edges
@@ -339,7 +344,7 @@ std::vector<std::uint8_t> faces_in_bevel_corners(const InputSurface& current,
     for (const Bevel& bevel : bevels) {
         for (Index f : bevel.faces) {
             taken[f] = 1;
-            open.emplace_back(f, &bevel.corner);
+            if (bevel.corner) open.emplace_back(f, &*bevel.corner);
         }
     }
     while (!open.empty()) {
@@ -371,6 +376,8 @@ public:
                const std::vector<std::uint8_t>& in_band, const std::vector<std::uint8_t>& strip,
                const VertexMoveOptions& options, double h)
         : current_(current),
+          vertex_patch_(features.vertex_patch),
+          in_band_(in_band),
           h_(h),
           scatter_(options.max_scatter_near * h),
           min_points_(static_cast<std::size_t>(options.min_fit_points)),
@@ -422,13 +429,95 @@ public:
         return std::nullopt;
     }
 
+    /// Whether the strip of patch p lies across the concave edge of a flat side and a curved one
+    /// (a side with no plane as a whole, read near each vertex by curved_side_plane()): all but
+    /// kBevelEndShare of its vertices face the way of both, lie in front of both and within
+    /// kBevelReach pitches of where they meet, as ConcaveCorner::holds() tests against two
+    /// planes. A dual mesher bevels such an edge as it does one of two planes: OpenVDB's across
+    /// spool's hub where it meets a flange (h = 0.4 mm) puts three vertices on a cone at 45
+    /// degrees 0.3 to 0.5 mm from the circle, which segmentation took for a face of its own.
+    /// Bound: per pair of a flat and a curved side, per vertex a walk of kCurvedSideRings rings.
+    bool across_curved_corner(Index p, const std::vector<Index>& vertices) const {
+        for (Index flat : sides_[p]) {
+            if (!side_plane_[flat]) continue;
+            for (Index curved : sides_[p]) {
+                if (side_plane_[curved] || members_.off_band[curved].size() < min_points_) continue;
+                const auto in_corner = std::count_if(
+                    vertices.begin(), vertices.end(),
+                    [&](Index v) { return in_curved_corner(v, *side_plane_[flat], curved); });
+                if (static_cast<double>(in_corner) >=
+                    (1.0 - kBevelEndShare) * static_cast<double>(vertices.size()))
+                    return true;
+            }
+        }
+        return false;
+    }
+
     /// The plane of a strip's or a piece's vertices as a bevel's (MostOf::Bevel).
     std::optional<PlaneFit> bevel_plane(const std::vector<Index>& vertices) const {
         return plane_of_most(current_, vertices, min_points_, scatter_, MostOf::Bevel);
     }
 
 private:
+    /// Whether v faces the way of the flat side and of the curved side's tangent plane near it,
+    /// and the two meet at a concave edge whose corner holds v (ConcaveCorner::holds()). The
+    /// flat side's centroid is taken at v's foot on it: a flange ringing a hub has its centroid
+    /// on the axis, behind the hub.
+    bool in_curved_corner(Index v, const PlaneFit& flat, Index curved) const {
+        const Vec3& x = current_.mesh.positions[v];
+        const std::optional<PlaneFit> tangent = curved_side_plane(v, curved);
+        if (!tangent) return false;
+        const Vec3& normal = current_.normals.vertex[v];
+        if (normal.dot(flat.plane.normal) <= 0.0 || normal.dot(tangent->plane.normal) <= 0.0)
+            return false;
+        const PlaneFit flat_here{flat.plane, flat.plane.projection(x), flat.rms_distance};
+        const std::optional<ConcaveCorner> corner =
+            concave_corner(flat_here, *tangent, min_angle_cosine_);
+        return corner && corner->holds(x, scatter_, kBevelReach * h_);
+    }
+
+    /// The tangent plane of patch `curved` at its vertex off the bands nearest v (by rings, then
+    /// by distance) within kCurvedSideRings rings: its vertex normal there, which on a smooth
+    /// face leans from the surface's by its curvature over a few faces (a cylinder of 20 pitches'
+    /// radius: a fiftieth of a pitch over the strip's width). None where it has none there.
+    std::optional<PlaneFit> curved_side_plane(Index v, Index curved) const {
+        std::vector<Index> reached{v};
+        std::size_t ring_begin = 0;
+        for (int ring = 0; ring < kCurvedSideRings; ++ring) {
+            const std::size_t ring_end = reached.size();
+            for (std::size_t i = ring_begin; i < ring_end; ++i) {
+                for_each_ring_vertex(
+                    current_.mesh, current_.connectivity, reached[i], [&](Index j) {
+                        if (std::find(reached.begin(), reached.end(), j) == reached.end())
+                            reached.push_back(j);
+                    });
+            }
+            ring_begin = ring_end;
+            const Index nearest = nearest_of(v, curved, std::span(reached).subspan(ring_begin));
+            if (nearest == kNoIndex) continue;
+            const Vec3& c = current_.mesh.positions[nearest];
+            const Vec3& n = current_.normals.vertex[nearest];
+            return PlaneFit{{n, n.dot(c)}, c, 0.0};
+        }
+        return std::nullopt;
+    }
+
+    /// Of `candidates`, the vertex of patch `patch` off the bands nearest v; kNoIndex if none.
+    Index nearest_of(Index v, Index patch, std::span<const Index> candidates) const {
+        const Vec3& x = current_.mesh.positions[v];
+        Index nearest = kNoIndex;
+        double least = std::numeric_limits<double>::infinity();
+        for (Index j : candidates) {
+            if (vertex_patch_[j] != patch || in_band_[j]) continue;
+            const double d = (current_.mesh.positions[j] - x).squaredNorm();
+            if (d < least) least = d, nearest = j;
+        }
+        return nearest;
+    }
+
     const InputSurface& current_;
+    const std::vector<Index>& vertex_patch_;
+    const std::vector<std::uint8_t>& in_band_;
     double h_, scatter_;
     std::size_t min_points_;
     double min_angle_cosine_;
@@ -519,6 +608,19 @@ void dissolve(const InputSurface& current, const std::vector<std::uint8_t>& take
     }
 }
 
+/// Of `faces` (ascending), those in none of bevels[from, ...).
+std::vector<Index> faces_outside(const std::vector<Index>& faces, const std::vector<Bevel>& bevels,
+                                 std::size_t from) {
+    std::vector<Index> inside;
+    for (std::size_t b = from; b < bevels.size(); ++b)
+        inside.insert(inside.end(), bevels[b].faces.begin(), bevels[b].faces.end());
+    std::sort(inside.begin(), inside.end());
+    std::vector<Index> outside;
+    std::set_difference(faces.begin(), faces.end(), inside.begin(), inside.end(),
+                        std::back_inserter(outside));
+    return outside;
+}
+
 /// The pieces (pieces_of()) of a strip that is no bevel as a whole that are bevels, into
 /// `bevels`. Bound: per piece, a plane fit and BevelJudge::corner_across().
 void add_bevel_pieces(const InputSurface& current, const std::vector<Index>& face_patch,
@@ -551,11 +653,14 @@ BevelDissolution without_concave_bevels(const InputSurface& current, FeatureSegm
     // on one line, and a bevel's ends, where it meets the next one's at a corner, part from its
     // plane by a few hundredths of a pitch, or bend round a pocket's rounded corner).
     std::vector<std::optional<ConcaveCorner>> across(patches);
+    std::vector<std::uint8_t> across_curved(patches, 0);
     for_each_index(patches, 1, [&](std::size_t p) {
         if (!strip[p]) return;
         const std::vector<Index>& vertices = strips_members.all[p];
         const std::optional<PlaneFit> plane = judge.bevel_plane(vertices);
         if (plane) across[p] = judge.corner_across(static_cast<Index>(p), vertices, *plane);
+        if (!across[p])
+            across_curved[p] = judge.across_curved_corner(static_cast<Index>(p), vertices);
     });
     std::vector<std::vector<Index>> faces_of(patches);
     for (Index f = 0; f < current.mesh.face_count(); ++f) {
@@ -567,10 +672,14 @@ BevelDissolution without_concave_bevels(const InputSurface& current, FeatureSegm
     for (std::size_t p = 0; p < patches; ++p) {
         if (across[p]) {
             bevel[p] = 1;
-            bevels.push_back({std::move(faces_of[p]), *across[p]});
+            bevels.push_back({std::move(faces_of[p]), across[p]});
         } else if (strip[p]) {
+            const std::size_t found = bevels.size();
             add_bevel_pieces(current, features.face_patch, judge, static_cast<Index>(p),
                              faces_of[p], bevels);
+            if (!across_curved[p]) continue;
+            bevel[p] = 1;
+            bevels.push_back({faces_outside(faces_of[p], bevels, found), std::nullopt});
         }
     }
     BevelDissolution r{std::move(features), 0};

@@ -43,11 +43,17 @@ struct BevelDissolution {
 /// the strip: a pocket's walls round its rounded corners), parting by more than
 /// options.junction_angle_deg at a concave edge, all but a tenth of its vertices (where it ends
 /// at the part's sides) in front of both planes and within two pitches of where they meet
-/// (farther where they meet at an acute angle, as far as the corner is as wide). Each
+/// (farther where they meet at an acute angle, as far as the corner is as wide). A strip that
+/// lies across the concave edge of a flat patch and a curved one (no plane as a whole) is a
+/// bevel too where all but a tenth of its vertices face both and lie in their corner so, the
+/// curved face taken as its tangent plane at its vertex off the bands nearest each (a round
+/// pocket's floor circle, a hub where it meets a flange); the faces of its pieces that are
+/// bevels of two planes spread as above, the rest of it not. Each
 /// patch is judged on the segmentation given, so the result does not depend on the order they
 /// are judged in. Bound: a pass over the vertices and faces, a plane fit per patch, per strip
 /// (or piece) a test per pair of the patches within two steps of it (with a fit along it for each
-/// of those with no plane as a whole), and each face once in the spread.
+/// of those with no plane as a whole; for a curved one a walk of four rings per vertex), and
+/// each face once in the spread.
 BevelDissolution without_concave_bevels(const InputSurface& current, FeatureSegmentation features,
                                         const BandClassification& bands, const Grid& grid,
                                         const VertexMoveOptions& options = {});
