@@ -419,7 +419,7 @@ AcutePocket acute_pocket(const Eigen::Matrix3d& turn) {
 // corner is sought as far as the corner is as wide as a right angle's, and the vertex of its
 // cross-section nearest the edge goes onto it, standing for the cells left empty: the share of
 // the corners' length within 0.15 of a pitch of a crease went 0.21, 0.28, 0.10 and 0.08 -> 0.38,
-// 0.49, 0.37 and 0.57 at these turns (none before restoring).
+// 0.48, 0.37 and 0.57 at these turns (none before restoring).
 TEST(OpenVdbMesher, APocketsAcuteCornersComeBackOnTheEdge) {
     const RestoreOptions options;
     double mean = 0.0;

@@ -382,7 +382,8 @@ public:
           scatter_(options.max_scatter_near * h),
           min_points_(static_cast<std::size_t>(options.min_fit_points)),
           min_angle_cosine_(std::cos(options.junction_angle_deg * std::numbers::pi / 180.0)),
-          sides_(features.patch_count) {
+          sides_(features.patch_count),
+          reached_in_(current.mesh.vertex_count(), 0) {
         const std::vector<std::vector<Index>> around = neighbouring_patches(current.mesh, features);
         std::vector<std::uint8_t> wanted(features.patch_count, 0);
         for (std::size_t p = 0; p < features.patch_count; ++p) {
@@ -437,17 +438,31 @@ public:
     /// spool's hub where it meets a flange (h = 0.4 mm) puts three vertices on a cone at 45
     /// degrees 0.3 to 0.5 mm from the circle, which segmentation took for a face of its own.
     /// Bound: per pair of a flat and a curved side, per vertex a walk of kCurvedSideRings rings.
+    /// One strip at a time (curved_side_plane()).
     bool across_curved_corner(Index p, const std::vector<Index>& vertices) const {
+        const double allowed = kBevelEndShare * static_cast<double>(vertices.size());
+        // The flat sides that most of the vertices face and lie in front of: a test of each
+        // vertex against a plane, where the curved side's asks for a walk round it.
+        std::vector<Index> flats;
         for (Index flat : sides_[p]) {
             if (!side_plane_[flat]) continue;
-            for (Index curved : sides_[p]) {
-                if (side_plane_[curved] || members_.off_band[curved].size() < min_points_) continue;
-                const auto in_corner = std::count_if(
-                    vertices.begin(), vertices.end(),
-                    [&](Index v) { return in_curved_corner(v, *side_plane_[flat], curved); });
-                if (static_cast<double>(in_corner) >=
-                    (1.0 - kBevelEndShare) * static_cast<double>(vertices.size()))
-                    return true;
+            const auto facing = std::count_if(vertices.begin(), vertices.end(), [&](Index v) {
+                return faces_flat_side(v, *side_plane_[flat]);
+            });
+            if (static_cast<double>(vertices.size() - facing) <= allowed) flats.push_back(flat);
+        }
+        if (flats.empty()) return false;
+        std::vector<CurvedSideNear> near(vertices.size());
+        for (Index curved : sides_[p]) {
+            if (side_plane_[curved] || members_.off_band[curved].size() < min_points_) continue;
+            std::fill(near.begin(), near.end(), CurvedSideNear{});
+            for (Index flat : flats) {
+                std::size_t missed = 0;
+                for (std::size_t i = 0; i < vertices.size(); ++i) {
+                    missed += !in_curved_corner(vertices[i], *side_plane_[flat], curved, near[i]);
+                    if (static_cast<double>(missed) > allowed) break;
+                }
+                if (static_cast<double>(missed) <= allowed) return true;
             }
         }
         return false;
@@ -459,20 +474,31 @@ public:
     }
 
 private:
-    /// Whether v faces the way of the flat side and of the curved side's tangent plane near it,
-    /// and the two meet at a concave edge whose corner holds v (ConcaveCorner::holds()). The
-    /// flat side's centroid is taken at v's foot on it: a flange ringing a hub has its centroid
-    /// on the axis, behind the hub.
-    bool in_curved_corner(Index v, const PlaneFit& flat, Index curved) const {
+    /// Whether v faces the way of the flat side and lies in front of it (to the scatter).
+    bool faces_flat_side(Index v, const PlaneFit& flat) const {
+        return current_.normals.vertex[v].dot(flat.plane.normal) > 0.0 &&
+               flat.plane.signed_distance(current_.mesh.positions[v]) >= -scatter_;
+    }
+
+    /// A curved side's tangent plane near a vertex (curved_side_plane()), sought once.
+    struct CurvedSideNear {
+        bool sought = false;
+        std::optional<PlaneFit> tangent;
+    };
+
+    /// Whether v faces the way of the flat side and of the curved side's tangent plane near it
+    /// (`near`: sought here where it was not), and the two meet at a concave edge whose corner
+    /// holds v (ConcaveCorner::holds()). The flat side's centroid is taken at v's foot on it: a
+    /// flange ringing a hub has its centroid on the axis, behind the hub.
+    bool in_curved_corner(Index v, const PlaneFit& flat, Index curved, CurvedSideNear& near) const {
+        if (!faces_flat_side(v, flat)) return false;
         const Vec3& x = current_.mesh.positions[v];
-        const std::optional<PlaneFit> tangent = curved_side_plane(v, curved);
-        if (!tangent) return false;
         const Vec3& normal = current_.normals.vertex[v];
-        if (normal.dot(flat.plane.normal) <= 0.0 || normal.dot(tangent->plane.normal) <= 0.0)
-            return false;
+        if (!near.sought) near = {true, curved_side_plane(v, curved)};
+        if (!near.tangent || normal.dot(near.tangent->plane.normal) <= 0.0) return false;
         const PlaneFit flat_here{flat.plane, flat.plane.projection(x), flat.rms_distance};
         const std::optional<ConcaveCorner> corner =
-            concave_corner(flat_here, *tangent, min_angle_cosine_);
+            concave_corner(flat_here, *near.tangent, min_angle_cosine_);
         return corner && corner->holds(x, scatter_, kBevelReach * h_);
     }
 
@@ -480,24 +506,32 @@ private:
     /// by distance) within kCurvedSideRings rings: its vertex normal there, which on a smooth
     /// face leans from the surface's by its curvature over a few faces (a cylinder of 20 pitches'
     /// radius: a fiftieth of a pitch over the strip's width). None where it has none there.
+    /// Bound: the vertices within those rings. Not for two threads at once: it marks what it
+    /// reaches in the judge.
     std::optional<PlaneFit> curved_side_plane(Index v, Index curved) const {
-        std::vector<Index> reached{v};
+        // Each walk marks what it reached with a number of its own, so no mark is cleared.
+        if (++walk_ == 0) std::fill(reached_in_.begin(), reached_in_.end(), walk_++);
+        std::vector<Index>& reached = reached_;
+        reached.assign(1, v);
+        reached_in_[v] = walk_;
         std::size_t ring_begin = 0;
         for (int ring = 0; ring < kCurvedSideRings; ++ring) {
             const std::size_t ring_end = reached.size();
             for (std::size_t i = ring_begin; i < ring_end; ++i) {
-                for_each_ring_vertex(
-                    current_.mesh, current_.connectivity, reached[i], [&](Index j) {
-                        if (std::find(reached.begin(), reached.end(), j) == reached.end())
-                            reached.push_back(j);
-                    });
+                for_each_ring_vertex(current_.mesh, current_.connectivity, reached[i],
+                                     [&](Index j) {
+                                         if (reached_in_[j] == walk_) return;
+                                         reached_in_[j] = walk_;
+                                         reached.push_back(j);
+                                     });
+            }
+            const Index nearest = nearest_of(v, curved, std::span(reached).subspan(ring_end));
+            if (nearest != kNoIndex) {
+                const Vec3& c = current_.mesh.positions[nearest];
+                const Vec3& n = current_.normals.vertex[nearest];
+                return PlaneFit{{n, n.dot(c)}, c, 0.0};
             }
             ring_begin = ring_end;
-            const Index nearest = nearest_of(v, curved, std::span(reached).subspan(ring_begin));
-            if (nearest == kNoIndex) continue;
-            const Vec3& c = current_.mesh.positions[nearest];
-            const Vec3& n = current_.normals.vertex[nearest];
-            return PlaneFit{{n, n.dot(c)}, c, 0.0};
         }
         return std::nullopt;
     }
@@ -524,6 +558,11 @@ private:
     std::vector<std::vector<Index>> sides_;
     PatchMembers members_;
     std::vector<std::optional<PlaneFit>> side_plane_;
+    /// curved_side_plane()'s walks: per vertex (#V) the number of the walk that last reached it,
+    /// the current walk's number, and what it reached.
+    mutable std::vector<std::uint32_t> reached_in_;
+    mutable std::uint32_t walk_ = 0;
+    mutable std::vector<Index> reached_;
 };
 
 /// Normals within this angle (degrees) of a piece's first face keep to the piece: a bevel's rows
@@ -653,14 +692,11 @@ BevelDissolution without_concave_bevels(const InputSurface& current, FeatureSegm
     // on one line, and a bevel's ends, where it meets the next one's at a corner, part from its
     // plane by a few hundredths of a pitch, or bend round a pocket's rounded corner).
     std::vector<std::optional<ConcaveCorner>> across(patches);
-    std::vector<std::uint8_t> across_curved(patches, 0);
     for_each_index(patches, 1, [&](std::size_t p) {
         if (!strip[p]) return;
         const std::vector<Index>& vertices = strips_members.all[p];
         const std::optional<PlaneFit> plane = judge.bevel_plane(vertices);
         if (plane) across[p] = judge.corner_across(static_cast<Index>(p), vertices, *plane);
-        if (!across[p])
-            across_curved[p] = judge.across_curved_corner(static_cast<Index>(p), vertices);
     });
     std::vector<std::vector<Index>> faces_of(patches);
     for (Index f = 0; f < current.mesh.face_count(); ++f) {
@@ -677,7 +713,7 @@ BevelDissolution without_concave_bevels(const InputSurface& current, FeatureSegm
             const std::size_t found = bevels.size();
             add_bevel_pieces(current, features.face_patch, judge, static_cast<Index>(p),
                              faces_of[p], bevels);
-            if (!across_curved[p]) continue;
+            if (!judge.across_curved_corner(static_cast<Index>(p), strips_members.all[p])) continue;
             bevel[p] = 1;
             bevels.push_back({faces_outside(faces_of[p], bevels, found), std::nullopt});
         }

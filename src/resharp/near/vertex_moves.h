@@ -108,7 +108,8 @@ struct MoveRule {
 /// third face): the point of it nearest the vertex within its input
 /// cell, or, where it misses that cell, the cell's point nearest it (where the vertex lies in
 /// front of both of two planes, the empty corner of a concave edge, the junction's point nearest
-/// it where that lies within two pitches in a cell that holds no input vertex, the vertex being
+/// it where that lies within two pitches in a cell that holds no input vertex in a band or
+/// between patches, the vertex being
 /// the nearest to it of those between patches in its ring and it out of their reach: the mesher
 /// lost that cell, and the nearest vertex stands for it; else the nearer plane's point within
 /// that reach, that plane's patch taken, VertexMoves::onto_other_patch); where
