@@ -615,7 +615,9 @@ TEST(OpenVdbMesher, AChamfersUnbandedConvexEdgesComeBack) {
 // between them, on the boss's axis, behind the boss's plane near the edge: where a side's
 // centroid told which way the edge turns, that concave edge was taken for convex, and the
 // plate's vertices in front of it beside the boss refused their own plane. The side's centroid
-// is now that of its vertices near the vertex.
+// is now that of its vertices near the vertex. And the plate's rows off the bands in front of
+// it and of the boss's tangent plane nearby go onto the plate as they do in front of another
+// flat face (150 -> 96 left off it).
 TEST(OpenVdbMesher, APlatesBandVerticesBesideABossGoOntoThePlate) {
     const Mesh input = extras::openvdb_dual_mesh(boss_on_a_plate(), kPitch);
     RestoreOptions options;
@@ -633,7 +635,7 @@ TEST(OpenVdbMesher, APlatesBandVerticesBesideABossGoOntoThePlate) {
     }
     EXPECT_GT(beside, 150u);       // 187 here, within 0.125 to 0.75 mm of the boss
     EXPECT_EQ(off_input, beside);  // OpenVDB displaces them all
-    EXPECT_LT(off_output, 158u);   // 166 before, 150 when this test was written
+    EXPECT_LT(off_output, 110u);   // 166 before, 150 when this test was written, then 96
     test::expect_no_harm(input, r, options);
 }
 

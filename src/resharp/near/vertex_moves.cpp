@@ -366,14 +366,16 @@ private:
     /// within its input cell (where the plane misses the cell, within the cells around:
     /// nearest_beyond_cell(); on hex_prism turned by OpenVDB, rows of its pocket's floor 0.2 to
     /// 0.35 pitches in front of it, in cells it misses), where it lies in front of the plane by at
-    /// most kOffFaceReach and in front of another flat face within the fit rings, within two
-    /// pitches, the two parting by more than the junction angle: in the empty corner of a concave
-    /// edge, where OpenVDB puts the rows beside the edge up to a quarter of a pitch off their face
-    /// (stepped_block turned at 100 cells: 47 of the 194 vertices within two pitches of its
-    /// pocket's floor edge lay more than 0.05 pitches off the surface after the moves, 9 with
-    /// this). Anywhere else a vertex in front of a flat face may be one of a curved face beside it
-    /// that segmentation gave the flat one (sphere_part by OpenVDB, aligned: Edge F-score 0.849 ->
-    /// 0.832 with the face's plane taken for every such vertex). None elsewhere: the vertex stays.
+    /// most kOffFaceReach and in front of another face within the fit rings (a flat face's plane,
+    /// or a curved one's tangent plane at its vertex off the bands nearest: a boss standing on
+    /// the face, a hub on a flange), within two pitches, the two parting by more than the
+    /// junction angle: in the empty corner of a concave edge, where OpenVDB puts the rows beside
+    /// the edge up to a quarter of a pitch off their face (stepped_block turned at 100 cells: 47 of
+    /// the 194 vertices within two pitches of its pocket's floor edge lay more than 0.05 pitches
+    /// off the surface after the moves, 9 with this). Anywhere else a vertex in front of a flat
+    /// face may be one of a curved face beside it that segmentation gave the flat one (sphere_part
+    /// by OpenVDB, aligned: Edge F-score 0.849 -> 0.832 with the face's plane taken for every such
+    /// vertex). None elsewhere: the vertex stays.
     std::optional<Vec3> onto_flat_face(Index v, Scratch& scratch) const {
         if (rule_.placement != VertexPlacement::Near || vertex_patch_[v] == kNoIndex ||
             !is_flat_face(vertex_patch_[v]))
@@ -386,8 +388,11 @@ private:
         patches[0] = vertex_patch_[v];
         const std::size_t count = std::min(add_reached_patches(v, patches, 1, scratch), kMaxSides);
         const auto in_corner_with = [&](Index other_patch) {
-            if (!is_flat_face(other_patch)) return false;
-            const Plane& other = flat_face_[other_patch]->plane;
+            const std::optional<Plane> near =
+                is_flat_face(other_patch) ? std::optional<Plane>(flat_face_[other_patch]->plane)
+                                          : tangent_plane_near(x, other_patch, scratch);
+            if (!near) return false;
+            const Plane& other = *near;
             const double e = other.signed_distance(x);
             const std::array<Vec3, 2> normals = {face.normal, other.normal};
             return e > on_plane_tolerance() && e <= 2.0 * rule_.grid.pitch && part_sharply(normals);
@@ -396,6 +401,24 @@ private:
             return std::nullopt;
         const std::optional<Vec3> y = nearest_in_cell(x, face, input_[v]);
         return y ? y : nearest_beyond_cell(x, face, input_[v]);
+    }
+
+    /// The tangent plane of patch `patch` at its vertex off the bands nearest x among those
+    /// gathered (its vertex normal there); none where none was gathered.
+    std::optional<Plane> tangent_plane_near(const Vec3& x, Index patch,
+                                            const Scratch& scratch) const {
+        std::optional<Plane> nearest;
+        double least = std::numeric_limits<double>::infinity();
+        for (Index j : scratch.reached) {
+            if (vertex_patch_[j] != patch || in_band_[j]) continue;
+            const Vec3& c = current_.mesh.positions[j];
+            const double d = (c - x).squaredNorm();
+            if (d >= least) continue;
+            least = d;
+            const Vec3& n = current_.normals.vertex[j];
+            nearest = Plane{n, n.dot(c)};
+        }
+        return nearest;
     }
 
     /// Whether a vertex of v's ring has a patch other than v's. A lean walk: asked of every vertex

@@ -119,8 +119,9 @@ struct MoveRule {
 /// only beyond its ring give their corner where the vertex lies in front of all three and the
 /// corner within that reach, else the two planes nearest it. A vertex of a flat face off the
 /// bands moves onto the face's plane within its cell (the cells around where it misses that) only
-/// where it lies in front of it (by at most half a pitch) and of another flat face within two
-/// pitches (the empty corner of a concave edge, where OpenVDB displaces a face's rows). A vertex
+/// where it lies in front of it (by at most half a pitch) and of another face within two
+/// pitches (a curved one read as its tangent plane at its vertex off the bands nearest; the
+/// empty corner of a concave edge, where OpenVDB displaces a face's rows). A vertex
 /// off the bands on the border of two flat patches that lies behind both planes (a dual mesher's
 /// vertex at a convex edge no band marks) goes where they meet within its cell, as a vertex of
 /// no patch does. A band vertex of a patch beside one other, one of them curved, in the empty
