@@ -237,6 +237,19 @@ std::string turned_halfspaces(const Vec3& centre, const Eigen::Matrix3d& turn,
     return halfspaces.str();
 }
 
+/// The solid within `bounds` (a CSG box) and the halfspaces `kept` (turned_halfspaces()), less
+/// the one within `bounds` and the halfspaces `cut`, sampled by the simulator at kPitch / 4.
+Mesh sampled_cut(const std::string& bounds, const std::string& kept, const std::string& cut,
+                 const std::string& name) {
+    const sim::CsgSolid solid(sim::parse_csg(R"({"solid": {"difference": [{"intersection": [)" +
+                                                 bounds + kept + R"(]}, {"intersection": [)" +
+                                                 bounds + cut + "]}]}}",
+                                             name));
+    const sim::DexelGrid grid =
+        sim::sample_solid(sim::phased_grid(solid.bounds(), kPitch / 4, 0.4142), solid);
+    return sim::mesh_dexels(grid, {}).mesh;
+}
+
 /// Whether x lies within two pitches of one of `edges`.
 bool beside_any(const std::vector<std::pair<Vec3, Vec3>>& edges, const Vec3& x) {
     return std::any_of(edges.begin(), edges.end(), [&](const auto& e) {
@@ -284,13 +297,7 @@ TurnedPrism turned_hex_prism(const Eigen::Matrix3d& turn) {
     const std::string prism_part = turned_halfspaces(centre, turn, sides, prism.faces);
     const std::string pocket_part = turned_halfspaces(centre, turn, pocket, prism.faces);
     prism.faces.pop_back();  // the pocket's cap lies above the prism
-    const sim::CsgSolid solid(sim::parse_csg(R"({"solid": {"difference": [{"intersection": [)" +
-                                                 bounds + prism_part + R"(]}, {"intersection": [)" +
-                                                 bounds + pocket_part + "]}]}}",
-                                             "turned hexagonal prism"));
-    const sim::DexelGrid grid =
-        sim::sample_solid(sim::phased_grid(solid.bounds(), kPitch / 4, 0.4142), solid);
-    prism.mesh = sim::mesh_dexels(grid, {}).mesh;
+    prism.mesh = sampled_cut(bounds, prism_part, pocket_part, "turned hexagonal prism");
     return prism;
 }
 
@@ -399,15 +406,10 @@ AcutePocket acute_pocket(const Eigen::Matrix3d& turn) {
     pocket.emplace_back(-Vec3::UnitZ(), -floor);
     pocket.emplace_back(Vec3::UnitZ(), half_height + 1.0);
     std::vector<Plane> faces;
-    const std::string bounds = R"({"box": {"min": [-8, -8, -8], "max": [28, 28, 16]}})";
-    const sim::CsgSolid solid(sim::parse_csg(
-        R"({"solid": {"difference": [{"intersection": [)" + bounds +
-            turned_halfspaces(centre, turn, block, faces) + R"(]}, {"intersection": [)" + bounds +
-            turned_halfspaces(centre, turn, pocket, faces) + "]}]}}",
-        "block with a triangular pocket"));
-    const sim::DexelGrid grid =
-        sim::sample_solid(sim::phased_grid(solid.bounds(), kPitch / 4, 0.4142), solid);
-    p.mesh = sim::mesh_dexels(grid, {}).mesh;
+    p.mesh = sampled_cut(R"({"box": {"min": [-8, -8, -8], "max": [28, 28, 16]}})",
+                         turned_halfspaces(centre, turn, block, faces),
+                         turned_halfspaces(centre, turn, pocket, faces),
+                         "block with a triangular pocket");
     return p;
 }
 
