@@ -715,7 +715,8 @@ BevelDissolution without_concave_bevels(const InputSurface& current, FeatureSegm
                              faces_of[p], bevels);
             if (!judge.across_curved_corner(static_cast<Index>(p), strips_members.all[p])) continue;
             bevel[p] = 1;
-            bevels.push_back({faces_outside(faces_of[p], bevels, found), std::nullopt});
+            std::vector<Index> rest = faces_outside(faces_of[p], bevels, found);
+            if (!rest.empty()) bevels.push_back({std::move(rest), std::nullopt});
         }
     }
     BevelDissolution r{std::move(features), 0};
