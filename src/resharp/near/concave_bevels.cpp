@@ -503,9 +503,9 @@ private:
     }
 
     /// The tangent plane of patch `curved` at its vertex off the bands nearest v (by rings, then
-    /// by distance) within kCurvedSideRings rings: its vertex normal there, which on a smooth
-    /// face leans from the surface's by its curvature over a few faces (a cylinder of 20 pitches'
-    /// radius: a fiftieth of a pitch over the strip's width). None where it has none there.
+    /// by distance) within kCurvedSideRings rings: its vertex normal there (a cylinder of 20
+    /// pitches' radius leaves that plane by d^2 / 2r, a fortieth of a pitch a pitch away, about a
+    /// bevel's width). None where it has none there.
     /// Bound: the vertices within those rings. Not for two threads at once: it marks what it
     /// reaches in the judge.
     std::optional<PlaneFit> curved_side_plane(Index v, Index curved) const {
