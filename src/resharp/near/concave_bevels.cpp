@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "resharp/core/parallel.h"
+#include "resharp/near/tangent_plane.h"
 #include "resharp/surfaces/plane_fit.h"
 
 namespace resharp {
@@ -525,28 +526,13 @@ private:
                                          reached.push_back(j);
                                      });
             }
-            const Index nearest = nearest_of(v, curved, std::span(reached).subspan(ring_end));
-            if (nearest != kNoIndex) {
-                const Vec3& c = current_.mesh.positions[nearest];
-                const Vec3& n = current_.normals.vertex[nearest];
-                return PlaneFit{{n, n.dot(c)}, c, 0.0};
-            }
+            const std::optional<PlaneFit> tangent = tangent_plane_at_nearest(
+                current_, vertex_patch_, in_band_, std::span(reached).subspan(ring_end),
+                current_.mesh.positions[v], curved);
+            if (tangent) return tangent;
             ring_begin = ring_end;
         }
         return std::nullopt;
-    }
-
-    /// Of `candidates`, the vertex of patch `patch` off the bands nearest v; kNoIndex if none.
-    Index nearest_of(Index v, Index patch, std::span<const Index> candidates) const {
-        const Vec3& x = current_.mesh.positions[v];
-        Index nearest = kNoIndex;
-        double least = std::numeric_limits<double>::infinity();
-        for (Index j : candidates) {
-            if (vertex_patch_[j] != patch || in_band_[j]) continue;
-            const double d = (current_.mesh.positions[j] - x).squaredNorm();
-            if (d < least) least = d, nearest = j;
-        }
-        return nearest;
     }
 
     const InputSurface& current_;

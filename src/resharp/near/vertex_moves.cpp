@@ -16,6 +16,7 @@
 #include "resharp/core/parallel.h"
 #include "resharp/mesh/geometry.h"
 #include "resharp/near/occupied_cells.h"
+#include "resharp/near/tangent_plane.h"
 #include "resharp/surfaces/local_quadric.h"
 #include "resharp/surfaces/plane_fit.h"
 
@@ -388,11 +389,13 @@ private:
         patches[0] = vertex_patch_[v];
         const std::size_t count = std::min(add_reached_patches(v, patches, 1, scratch), kMaxSides);
         const auto in_corner_with = [&](Index other_patch) {
-            const std::optional<Plane> near =
-                is_flat_face(other_patch) ? std::optional<Plane>(flat_face_[other_patch]->plane)
-                                          : tangent_plane_near(x, other_patch, scratch);
+            const std::optional<PlaneFit> near =
+                is_flat_face(other_patch)
+                    ? flat_face_[other_patch]
+                    : tangent_plane_at_nearest(current_, vertex_patch_, in_band_, scratch.reached,
+                                               x, other_patch);
             if (!near) return false;
-            const Plane& other = *near;
+            const Plane& other = near->plane;
             const double e = other.signed_distance(x);
             const std::array<Vec3, 2> normals = {face.normal, other.normal};
             return e > on_plane_tolerance() && e <= 2.0 * rule_.grid.pitch && part_sharply(normals);
@@ -401,24 +404,6 @@ private:
             return std::nullopt;
         const std::optional<Vec3> y = nearest_in_cell(x, face, input_[v]);
         return y ? y : nearest_beyond_cell(x, face, input_[v]);
-    }
-
-    /// The tangent plane of patch `patch` at its vertex off the bands nearest x among those
-    /// gathered (its vertex normal there); none where none was gathered.
-    std::optional<Plane> tangent_plane_near(const Vec3& x, Index patch,
-                                            const Scratch& scratch) const {
-        std::optional<Plane> nearest;
-        double least = std::numeric_limits<double>::infinity();
-        for (Index j : scratch.reached) {
-            if (vertex_patch_[j] != patch || in_band_[j]) continue;
-            const Vec3& c = current_.mesh.positions[j];
-            const double d = (c - x).squaredNorm();
-            if (d >= least) continue;
-            least = d;
-            const Vec3& n = current_.normals.vertex[j];
-            nearest = Plane{n, n.dot(c)};
-        }
-        return nearest;
     }
 
     /// Whether a vertex of v's ring has a patch other than v's. A lean walk: asked of every vertex
@@ -1076,12 +1061,13 @@ private:
     }
 
     /// Near: to the sides of `patches` that still have no plane, the flat face's plane
-    /// (flat_faces()) where the face's vertices gathered all lie in bands (with_centroid_near()
-    /// of theirs): across a bevel over an acute concave edge a vertex beside one face lies five
-    /// rings and more from the other's vertices off the bands (hex_prism's triangular pocket,
-    /// whose corners open at 60 degrees, at 100 cells by OpenVDB), and without that face's plane
-    /// its junction was taken for one with a curved face: it went to the edge of its cell beside
-    /// the junction, past its neighbour, and turned their faces over.
+    /// (flat_faces()) where the face has vertices among those gathered (with_centroid_near() of
+    /// theirs, in the bands, as a rule, or too few off them for a fit): across a bevel over an
+    /// acute concave edge a vertex beside one face lies five rings and more from the other's
+    /// vertices off the bands (hex_prism's triangular pocket, whose corners open at 60 degrees, at
+    /// 100 cells by OpenVDB), and without that face's plane its junction was taken for one with a
+    /// curved face: it went to the edge of its cell beside the junction, past its neighbour, and
+    /// turned their faces over.
     void add_flat_faces_in_bands(std::span<const Index> patches, Fits& fits,
                                  Scratch& scratch) const {
         for (std::size_t i = 0; i < patches.size(); ++i) {
