@@ -140,7 +140,8 @@ Mesh turned_dual_mesh(const Mesh& fine, const Eigen::Matrix3d& turn) {
 // vertices lie on exactly, bring it nearer: taken only where half the vertices around lie on
 // them, 10, 13 and 38 % of it here; taken too where those vertices lie within half a pitch of
 // them (in front of a band vertex's own face), 57, 35 and 80 %; 51, 29 and 85 % with
-// BandVerticesOfAFaceThatMissesTheirCellGoOntoItWithinTheCellsAround below.
+// BandVerticesOfAFaceThatMissesTheirCellGoOntoItWithinTheCellsAround below; a mean of 60 %
+// before those vertices could lie a little behind the face too (kBehindFaceReach), 75 % since.
 TEST(OpenVdbMesher, TheTurnedLBlocksConcaveEdgeComesBackNearerTheEdge) {
     const test::SampledShape fine = test::sampled_l_block(kPitch / kFine);
     const auto concave = std::find_if(fine.edges.begin(), fine.edges.end(),
@@ -161,7 +162,7 @@ TEST(OpenVdbMesher, TheTurnedLBlocksConcaveEdgeComesBackNearerTheEdge) {
         restored += share_beside_a_crease(r.mesh, a, b, tolerance) / 3.0;
         test::expect_no_harm(input, r, options);
     }
-    EXPECT_GT(restored, 0.45);
+    EXPECT_GT(restored, 0.68);
 }
 
 // OpenVDB displaces the rows of a face beside a concave edge into the empty corner, up to a
@@ -196,8 +197,9 @@ TEST(OpenVdbMesher, TheTurnedLBlocksFaceRowsBesideItsConcaveEdgeGoOntoTheirFaces
     }
     EXPECT_GT(beside, 200u);     // 272 here
     EXPECT_GT(off_input, 100u);  // 129
-    EXPECT_LT(off_output, 28u);  // 77 before, 30 when this test was written, 24 since a face
-                                 // that misses the vertex's cell is taken in the cells around
+    EXPECT_LT(off_output, 18u);  // 77 before, 30 when this test was written, 24 since a face
+                                 // that misses the vertex's cell is taken in the cells around,
+                                 // 12 since its vertices may lie a little behind it
 }
 
 /// A hexagonal prism 10 mm across its flats and 6 mm tall about (6.1, 5.9, 4.2) with a
