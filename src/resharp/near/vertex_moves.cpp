@@ -95,8 +95,14 @@ constexpr double kFlatFaceScatter = 0.002;
 /// a vertex of the bevel between the faces most of them may be off. On stepped_block turned at
 /// 100 cells, of the 193 vertices of no patch within 1.5 pitches of a concave edge, 138 had a
 /// plane around them scattering by more than the junction scatter and 33 came within 0.15
-/// pitches of the edge; with this, 118 (their median distance 0.82 -> 0.02 pitches).
-constexpr double kOffFaceReach = 0.5;
+/// pitches of the edge; with this, 118 (their median distance 0.82 -> 0.02 pitches). Off the
+/// grid axes the rows beside a vertical concave edge lie up to 0.7 pitches off (stepped_block
+/// turned: 64 of the 541 fits within kBehindFaceReach behind have their farthest point 0.5 to
+/// 0.7 pitches in front, none farther; spool aligned has 48 at 0.75 to 0.85, its flanges' patches
+/// holding vertices of the hub); at half a pitch those band vertices took planes 13 degrees off
+/// their face (Edge F-score 0.812 -> 0.839 with this, chamfered_block turned 0.873 -> 0.895,
+/// spool aligned 0.766 -> 0.763).
+constexpr double kOffFaceReach = 0.7;
 /// ... and on a band vertex's own side (OffFace::InFront), where they may lie behind the plane
 /// by at most this (in pitches): OpenVDB's vertices a pitch or two along a face from a concave
 /// edge lie on it to a hundredth of a pitch, some behind (stepped_block turned at 100 cells, a
