@@ -963,7 +963,15 @@ private:
     /// plane tilted 5 degrees; now it goes to (13.997, 8.000). Surface nets' rows there lie on the
     /// faces, and the surface fitted beyond them may not (on a boss of 6.3 pitches' radius it met
     /// the plate 0.3 mm inside the boss); the vertex there lies 0.13 pitches in front of the
-    /// surface fitted nearby, and keeps its plane's point.
+    /// surface fitted nearby, and keeps its plane's point. Where no second-order surface fits the
+    /// curved side's vertices nearby (the displaced rows scatter them by more than
+    /// kCurvedJunctionScatter), the surface fitted beyond the rows decides alone, but only where
+    /// the flat side's rows off the bands are displaced too (flat_rows_displaced()): on spool
+    /// turned by OpenVDB, 37 hub vertices in the empty corner of its flanges' edges had no such
+    /// surface nearby (one 0.27 and 0.24 mm in front of the flange and the hub now goes within
+    /// 0.04 mm of the edge, 0.14 mm before); surface nets' boss on a plate had
+    /// one there, 0.25 pitches in front of both faces, whose surface beyond, fitted over the boss's
+    /// cylinder and the cone above it, met the plate 0.16 mm inside the boss.
     std::optional<Vec3> into_curved_concave_corner(Index v, std::span<const Side> sides,
                                                    const std::optional<Vec3>& taken,
                                                    Scratch& scratch) const {
@@ -976,7 +984,7 @@ private:
         // curved side fitted farther out (curved_side()) costs a wider gathering and fit.
         std::optional<SideSurfaces> surfaces =
             nearby_surfaces(v, std::span(patches.data(), 2), fits, scratch);
-        if (!surfaces || !surfaces->curved_nearby) return std::nullopt;
+        if (!surfaces || surfaces->curved == surfaces->count) return std::nullopt;
         const double h = rule_.grid.pitch;
         const double scatter = kCurvedJunctionScatter * h;
         const Vec3& x = current_.mesh.positions[v];
@@ -990,13 +998,32 @@ private:
         };
         const bool own_curved = surfaces->curved == 0;
         if (distance(surfaces->side[1 - surfaces->curved], x) <= scatter ||
-            distance(*surfaces->curved_nearby, x) > trusted || (!own_curved && taken_on_own()))
+            (surfaces->curved_nearby && distance(*surfaces->curved_nearby, x) > trusted) ||
+            (!own_curved && taken_on_own()))
+            return std::nullopt;
+        if (!surfaces->curved_nearby &&
+            !flat_rows_displaced(patches[1 - surfaces->curved],
+                                 surfaces->side[1 - surfaces->curved].plane, scratch))
             return std::nullopt;
         if (!fit_curved_side(v, std::span(patches.data(), 2), *surfaces, scratch) ||
             distance(surfaces->side[surfaces->curved], x) <= scatter ||
             (own_curved && taken_on_own()))
             return std::nullopt;
         return point_on_surfaces_junction(v, *surfaces);
+    }
+
+    /// Whether a vertex of flat side `patch` off the bands within the fit rings (scratch) lies in
+    /// front of its face's plane (flat_faces(); else `side_plane`) by more than kFlatFaceScatter:
+    /// OpenVDB displaces a flat face's rows beside a concave edge, and cell means of crossings on
+    /// a plane (surface nets') lie on it to rounding.
+    bool flat_rows_displaced(Index patch, const Plane& side_plane, const Scratch& scratch) const {
+        const Plane& plane = is_flat_face(patch) ? flat_face_[patch]->plane : side_plane;
+        const double off = kFlatFaceScatter * rule_.grid.pitch;
+        return std::any_of(scratch.reached.begin(), scratch.reached.begin() + scratch.fit_reached,
+                           [&](Index j) {
+                               return vertex_patch_[j] == patch && !in_band_[j] &&
+                                      plane.signed_distance(current_.mesh.positions[j]) > off;
+                           });
     }
 
     /// The sides of v's patches: its own first; for a band vertex the others around it too, and
