@@ -100,8 +100,8 @@ constexpr double kFlatFaceScatter = 0.002;
 /// turned: 64 of the 541 fits within kBehindFaceReach behind have their farthest point 0.5 to
 /// 0.7 pitches in front, none farther; spool aligned has 48 at 0.75 to 0.85, its flanges' patches
 /// holding vertices of the hub); at half a pitch those band vertices took planes 13 degrees off
-/// their face (Edge F-score 0.812 -> 0.839 with this, chamfered_block turned 0.873 -> 0.895,
-/// spool aligned 0.766 -> 0.763).
+/// their face (stepped_block turned's Edge F-score 0.812 -> 0.839 with this, chamfered_block
+/// turned 0.873 -> 0.895, spool aligned 0.766 -> 0.763).
 constexpr double kOffFaceReach = 0.7;
 /// ... and on a band vertex's own side (OffFace::InFront), where they may lie behind the plane
 /// by at most this (in pitches): OpenVDB's vertices a pitch or two along a face from a concave
@@ -143,14 +143,13 @@ enum class OffFace : std::uint8_t {
     /// On either side: the sides of a sharp junction (junction_target(), which holds them
     /// to flat planes parting sharply).
     EitherSide,
-    /// In front only (behind by at most kBehindFaceReach), the side the face faces: a band
-    /// vertex's own side. OpenVDB's error beside
-    /// a concave edge lies in the empty corner, in front of both faces (stepped_block turned:
-    /// 340 of the 504 fits whose points all lie within kOffFaceReach of the face). Where a curved
-    /// face leaves a flat one at a shallow angle, its vertices lie behind the plane (the
-    /// impeller by OpenVDB, its stock's sides where the channels' walls leave them: all 198 such
-    /// fits), and the face's plane there led band vertices past the edge: 149 -> 275 split
-    /// pieces flipped against the exact surface (149 with in front only).
+    /// In front only (behind by at most kBehindFaceReach), the side the face faces: a band vertex's
+    /// own side. OpenVDB's error beside a concave edge lies in the empty corner, in front of both
+    /// faces (stepped_block turned: 340 of the 504 fits whose points all lie within half a pitch
+    /// of the face). Where a curved face leaves a flat one at a shallow angle, its vertices lie
+    /// behind the plane (the impeller by OpenVDB, its stock's sides where the channels' walls leave
+    /// them: all 198 such fits), and the face's plane there led band vertices past the edge: 149 ->
+    /// 275 split pieces flipped against the exact surface (149 with in front only).
     InFront,
 };
 
@@ -969,9 +968,9 @@ private:
     /// the flat side's rows off the bands are displaced too (flat_rows_displaced()): on spool
     /// turned by OpenVDB, 37 hub vertices in the empty corner of its flanges' edges had no such
     /// surface nearby (one 0.27 and 0.24 mm in front of the flange and the hub now goes within
-    /// 0.04 mm of the edge, 0.14 mm before); surface nets' boss on a plate had
-    /// one there, 0.25 pitches in front of both faces, whose surface beyond, fitted over the boss's
-    /// cylinder and the cone above it, met the plate 0.16 mm inside the boss.
+    /// 0.04 mm of the edge, 0.14 mm before); surface nets' boss on a plate had one there, 0.25
+    /// pitches in front of both faces, whose surface beyond, fitted over the boss's cylinder and
+    /// the cone above it, met the plate 0.16 mm inside the boss.
     std::optional<Vec3> into_curved_concave_corner(Index v, std::span<const Side> sides,
                                                    const std::optional<Vec3>& taken,
                                                    Scratch& scratch) const {
@@ -1012,10 +1011,10 @@ private:
         return point_on_surfaces_junction(v, *surfaces);
     }
 
-    /// Whether a vertex of flat side `patch` off the bands within the fit rings (scratch) lies in
-    /// front of its face's plane (flat_faces(); else `side_plane`) by more than kFlatFaceScatter:
-    /// OpenVDB displaces a flat face's rows beside a concave edge, and cell means of crossings on
-    /// a plane (surface nets') lie on it to rounding.
+    /// Whether a vertex of flat side `patch` off the bands within the fit rings of the vertex being
+    /// planned (as scratch holds them) lies in front of its face's plane (flat_faces(); else
+    /// `side_plane`) by more than kFlatFaceScatter: OpenVDB displaces a flat face's rows beside a
+    /// concave edge, and cell means of crossings on a plane (surface nets') lie on it to rounding.
     bool flat_rows_displaced(Index patch, const Plane& side_plane, const Scratch& scratch) const {
         const Plane& plane = is_flat_face(patch) ? flat_face_[patch]->plane : side_plane;
         const double off = kFlatFaceScatter * rule_.grid.pitch;
