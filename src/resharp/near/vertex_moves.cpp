@@ -344,10 +344,14 @@ public:
         if (!patch_plane_.empty() && vertex_patch_[v] == kNoIndex)
             return {point_between_planes(v, scratch), std::nullopt, false};
         if (rule_.scope == FitScope::Patches && !may_move(v)) {
-            if (const std::optional<Vec3> edge = onto_unbanded_convex_edge(v, scratch))
-                return on_junction(edge);
-            if (const std::optional<Vec3> corner = onto_unbanded_curved_concave_edge(v, scratch))
-                return on_junction(corner);
+            if (const std::optional<std::array<Side, 2>> sides =
+                    unbanded_border_sides(v, scratch)) {
+                if (const std::optional<Vec3> edge = onto_unbanded_convex_edge(v, *sides))
+                    return on_junction(edge);
+                if (const std::optional<Vec3> corner =
+                        onto_unbanded_curved_concave_edge(v, *sides, scratch))
+                    return on_junction(corner);
+            }
             return {onto_flat_face(v, scratch)};
         }
         if (const std::optional<Vec3> bent = point_on_bent_face(v, scratch)) return {bent};
@@ -445,17 +449,8 @@ private:
     /// trusted within the junction scatter, parting by the junction angle, the edge not turning
     /// along them); none elsewhere. chamfered_block turned at 100 cells: Edge F-score 0.826 ->
     /// 0.836 by OpenVDB, 0.936 -> 0.943 by surface nets.
-    std::optional<Vec3> onto_unbanded_convex_edge(Index v, Scratch& scratch) const {
-        if (rule_.placement != VertexPlacement::Near || vertex_patch_[v] == kNoIndex ||
-            !on_patch_border(v))
-            return std::nullopt;
-        std::array<Index, kMaxSides> patches{};
-        patches[0] = vertex_patch_[v];
-        if (add_ring_patches(v, patches, 1) != 2) return std::nullopt;
-        const std::span<const Index> around(patches.data(), 2);
-        Fits fits;
-        if (fit_sides(v, around, OffFace::EitherSide, fits, scratch) < 2) return std::nullopt;
-        const std::array<PlaneFit, 2> planes{*fits[0], *fits[1]};
+    std::optional<Vec3> onto_unbanded_convex_edge(Index v, const std::array<Side, 2>& sides) const {
+        const std::array<PlaneFit, 2> planes{sides[0].fit, sides[1].fit};
         const Vec3& x = current_.mesh.positions[v];
         const double tolerance = on_plane_tolerance();
         if (planes[0].plane.signed_distance(x) >= -tolerance ||
@@ -476,18 +471,25 @@ private:
     /// it; 45 vertices there now move (Edge F-score 0.843 -> 0.851). None elsewhere: a
     /// surface-nets vertex there lies on the curved face (with the face's surface nearby not
     /// asked, sphere_part turned by surface nets 0.895 -> 0.891, one vertex 0.21 mm into it).
-    std::optional<Vec3> onto_unbanded_curved_concave_edge(Index v, Scratch& scratch) const {
+    std::optional<Vec3> onto_unbanded_curved_concave_edge(Index v, const std::array<Side, 2>& sides,
+                                                          Scratch& scratch) const {
+        return into_curved_concave_corner(v, sides, std::nullopt, false, scratch);
+    }
+
+    /// Near: the sides of a vertex off the bands on the border of its patch and exactly one
+    /// other, its own first, each with its plane fitted within the fit rings (as a junction's
+    /// sides: OffFace::EitherSide); none elsewhere, or where a side has no plane.
+    std::optional<std::array<Side, 2>> unbanded_border_sides(Index v, Scratch& scratch) const {
         if (rule_.placement != VertexPlacement::Near || vertex_patch_[v] == kNoIndex ||
             !on_patch_border(v))
             return std::nullopt;
         std::array<Index, kMaxSides> patches{};
         patches[0] = vertex_patch_[v];
         if (add_ring_patches(v, patches, 1) != 2) return std::nullopt;
-        const std::span<const Index> around(patches.data(), 2);
         Fits fits;
-        if (fit_sides(v, around, OffFace::EitherSide, fits, scratch) < 2) return std::nullopt;
-        const std::array<Side, 2> sides{Side{patches[0], *fits[0]}, Side{patches[1], *fits[1]}};
-        return into_curved_concave_corner(v, sides, std::nullopt, false, scratch);
+        if (fit_sides(v, std::span(patches.data(), 2), OffFace::EitherSide, fits, scratch) < 2)
+            return std::nullopt;
+        return std::array<Side, 2>{Side{patches[0], *fits[0]}, Side{patches[1], *fits[1]}};
     }
 
     /// Whether v has a patch and is one to move: near meshes move band vertices only (of the
