@@ -484,7 +484,7 @@ TEST(OpenVdbMesher, ARoundPocketsFloorCircleComesBackOnTheCircle) {
             circle.push_back(Vec3(8.13 + radius * std::cos(t), 7.91 + radius * std::sin(t), 3.21));
         }
         const double before = share_beside_a_crease(input, circle, 0.15 * kPitch);
-        const double after = share_beside_a_crease(r.mesh, circle, 0.5 * kPitch);
+        const double after = share_beside_a_crease(r.mesh, circle, 0.15 * kPitch);
         EXPECT_LT(before, 0.05);
         EXPECT_GT(after, 0.36);
         mean += after / 3.0;
