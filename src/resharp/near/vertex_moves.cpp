@@ -493,7 +493,8 @@ private:
     }
 
     /// Whether v has a patch and is one to move: near meshes move band vertices only (of the
-    /// others, onto_unbanded_convex_edge() and onto_flat_face() move a few).
+    /// others, onto_unbanded_convex_edge(), onto_unbanded_curved_concave_edge() and
+    /// onto_flat_face() move a few).
     bool may_move(Index v) const {
         return vertex_patch_[v] != kNoIndex &&
                (in_band_[v] || rule_.placement == VertexPlacement::Midpoint);
