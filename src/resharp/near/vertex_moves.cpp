@@ -1046,17 +1046,16 @@ private:
     }
 
     /// Whether a vertex of flat side `patch` off the bands within the fit rings of the vertex being
-    /// planned (as scratch holds them) lies in front of its face's plane (flat_faces(); else
-    /// `side_plane`) by more than kFlatFaceScatter: OpenVDB displaces a flat face's rows beside a
-    /// concave edge, and cell means of crossings on a plane (surface nets') lie on it to rounding.
-    bool flat_rows_displaced(Index patch, const Plane& side_plane, const Scratch& scratch) const {
+    /// planned (collect_side_points(), into scratch.points) lies in front of its face's plane
+    /// (flat_faces(); else `side_plane`) by more than kFlatFaceScatter: OpenVDB displaces a flat
+    /// face's rows beside a concave edge, and cell means of crossings on a plane (surface nets')
+    /// lie on it to rounding.
+    bool flat_rows_displaced(Index patch, const Plane& side_plane, Scratch& scratch) const {
         const Plane& plane = is_flat_face(patch) ? flat_face_[patch]->plane : side_plane;
         const double off = kFlatFaceScatter * rule_.grid.pitch;
-        return std::any_of(scratch.reached.begin(), scratch.reached.begin() + scratch.fit_reached,
-                           [&](Index j) {
-                               return vertex_patch_[j] == patch && !in_band_[j] &&
-                                      plane.signed_distance(current_.mesh.positions[j]) > off;
-                           });
+        collect_side_points(patch, scratch, scratch.fit_reached);
+        return std::any_of(scratch.points.begin(), scratch.points.end(),
+                           [&](const Vec3& q) { return plane.signed_distance(q) > off; });
     }
 
     /// The sides of v's patches: its own first; for a band vertex the others around it too, and
