@@ -132,6 +132,64 @@ TEST(FeatureSegmentation, KeepsTheSidesOfAFadingCreaseApart) {
     EXPECT_EQ(paper.vertex_patch[left], paper.vertex_patch[right]);
 }
 
+/// A flat face (z = 0, x < 0) and a face 45 degrees off it (beyond the rounding), rounded into
+/// each other over seven rows of faces each turning 5.625 degrees from the last, as a dual
+/// mesher rounds a sharp edge over the cells it crosses; 20 rows of 0.5 on either side, 60 rows
+/// along y. `slope` gets, per face, the angle of its row (degrees).
+Mesh rounded_edge(std::vector<double>& slope) {
+    std::vector<double> row_angle(20, 0.0);
+    for (int k = 1; k <= 7; ++k) row_angle.push_back(5.625 * k);
+    row_angle.insert(row_angle.end(), 20, 45.0);
+    std::vector<Vec3> profile{Vec3(-10.0, 0.0, 0.0)};
+    for (double degrees : row_angle) {
+        const double a = degrees * std::numbers::pi / 180.0;
+        profile.push_back(profile.back() + 0.5 * Vec3(std::cos(a), 0.0, std::sin(a)));
+    }
+    const auto columns = static_cast<Index>(profile.size());
+    const Index rows = 61;
+    Mesh mesh;
+    for (Index j = 0; j < rows; ++j) {
+        for (const Vec3& p : profile) mesh.positions.push_back(p + Vec3(0.0, 0.5 * j, 0.0));
+    }
+    slope.clear();
+    for (Index j = 0; j + 1 < rows; ++j) {
+        for (Index i = 0; i + 1 < columns; ++i) {
+            const Index a = columns * j + i;
+            mesh.triangles.push_back({a, a + 1, a + columns + 1});
+            mesh.triangles.push_back({a, a + columns + 1, a + columns});
+            slope.insert(slope.end(), 2, row_angle[i]);
+        }
+    }
+    return mesh;
+}
+
+// Growth under the growing angle (8 degrees) creeps over a rounding whose rows turn by less,
+// and takes both faces into one region; held to its seed's normal from its first face on,
+// within 1.5 growing angles (restore()'s near-surface settings), no region takes faces of both.
+TEST(FeatureSegmentation, RegionsHeldToTheirSeedStopAtARoundedEdge) {
+    std::vector<double> slope;
+    const Mesh mesh = rounded_edge(slope);
+    const Connectivity c = build_connectivity(mesh);
+    const auto fn = face_normals(mesh);
+    auto regions_of = [&](double degrees, const GrownRegions& grown) {
+        std::set<Index> regions;
+        for (Index f = 0; f < mesh.face_count(); ++f) {
+            if (slope[f] == degrees) regions.insert(grown.face_region[f]);
+        }
+        return regions;
+    };
+    const GrownRegions unlimited = grow_feature_regions(mesh, c, fn, {.curved_region_faces = 0});
+    EXPECT_EQ(unlimited.count, 1u);
+    const GrownRegions held =
+        grow_feature_regions(mesh, c, fn, {.curved_region_faces = 1, .curved_seed_reach = 1.5});
+    const std::set<Index> flat = regions_of(0.0, held), steep = regions_of(45.0, held);
+    EXPECT_EQ(flat.size(), 1u);
+    EXPECT_EQ(steep.size(), 1u);
+    EXPECT_NE(*flat.begin(), *steep.begin());
+    EXPECT_THROW(grow_feature_regions(mesh, c, fn, {.curved_seed_reach = 0.5}), InvalidInput);
+    EXPECT_THROW(grow_feature_regions(mesh, c, fn, {.curved_seed_reach = 30.0}), InvalidInput);
+}
+
 /// A block [0.37, 10.21] x [0.29, 8.13] x [0.41, 6.2929] (faces 0..5 as in sampled_box()) with
 /// a 45-degree chamfer along its top front edge: -y + z <= 3.4 (face 6), meeting the top at
 /// y = 2.8929, on a grid of pitch 0.5 with nodes at multiples of it. There the last chamfer

@@ -62,6 +62,25 @@ namespace {
 /// exact surface 112 -> 79), frogface 0.811 -> 0.801, for about 7 % more time on mech.
 constexpr int kMidpointPatchRounds = 3;
 
+/// Near: the faces a region takes before it holds to its seed's normal
+/// (FeatureSegmentationOptions::curved_region_faces, 300 on exact meshes), here one: the seed.
+/// A dual mesher rounds a sharp edge over the cells it crosses, in steps of a few degrees from
+/// face to face, so that growth under the growing angle crept from a face over the rounding onto
+/// the next face: cone_part aligned by OpenVDB at 100 cells came out of region growing with its
+/// top and its 45-degree chamfer in one region, and with them its cylinder. Held to the seed, a
+/// region ends where the faces have turned by the angle; curved faces come out in pieces, which
+/// merging joins again, as on exact meshes past 300 faces (docs/method.md, *Regions held to
+/// their seed*: OpenVDB's mean Edge F-score on the CAD corpus and the benchmark parts 0.808 ->
+/// 0.830, cone_part aligned 0.655 -> 0.821).
+constexpr std::size_t kNearRegionFaces = 1;
+/// Near: how far from its seed's normal a region still takes faces, in growing angles
+/// (FeatureSegmentationOptions::curved_seed_reach; 1 on exact meshes). Held within the growing
+/// angle itself, a boss 6.6 cells in radius came out in pieces two cells wide, tiny patches,
+/// and 0.21 of its circle on the plate came back on a crease (OpenVdbMesher's test asks 0.25);
+/// the mean Edge F-score above was 0.827 at 1, 0.828 at 1.25, 0.830 at 1.5, 0.827 at 1.875
+/// and 0.824 at 2.5.
+constexpr double kNearSeedReach = 1.5;
+
 void validate_mesh(const Mesh& mesh) {
     if (mesh.triangles.empty()) throw InvalidInput("the mesh has no triangles");
     for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
@@ -222,23 +241,25 @@ void classify_and_fit_normals(const Mesh& mesh, Detection& d, const RestoreOptio
     });
 }
 
-/// detect_bands(), calling after_curvature() once the curvatures are estimated: the normals and
-/// curvatures run in parallel, the segmentations mostly on one thread, so that work started
-/// then finds a second thread free. The classification and the feature normals take the options
-/// options_for_normals() gives once the segmentations are done.
-template <class AfterCurvature, class OptionsForNormals>
+/// detect_bands(), its segmentations and what follows them taking the options
+/// options_for_segmentation() gives once the normals and curvatures are estimated: a caller
+/// measures the vertices' placement meanwhile, on which the growth of the regions and the
+/// feature normals depend (adopt()). The normals and curvatures run in parallel, the
+/// segmentations mostly on one thread each. `stop` is asked between stages.
+template <class OptionsForSegmentation>
 Detection detect_bands_calling(const Mesh& mesh, std::shared_ptr<const Connectivity> shared,
-                               const RestoreOptions& options, AfterCurvature&& after_curvature,
-                               OptionsForNormals&& options_for_normals) {
+                               const StopWhen& stop,
+                               OptionsForSegmentation&& options_for_segmentation) {
     Detection d;
     d.connectivity = std::move(shared);
     const Connectivity& connectivity = *d.connectivity;
-    StageClock clock(d.stage_time, options.stop);
+    StageClock clock(d.stage_time, stop);
     clock.run(Stage::MeshBuilding, [&] { d.normals = surface_normals(mesh, connectivity); });
     PrincipalCurvatures curvatures;
     clock.run(Stage::Curvature, [&] {
         curvatures = estimate_principal_curvatures(mesh, connectivity, d.normals.vertex);
     });
+    const RestoreOptions& options = options_for_segmentation();
     GrownRegions regions;
     auto grow = [&] {
         regions = grow_feature_regions(mesh, connectivity, d.normals.face, options.features);
@@ -247,20 +268,15 @@ Detection detect_bands_calling(const Mesh& mesh, std::shared_ptr<const Connectiv
         d.edges = segment_edges(mesh, connectivity, curvatures, d.normals.face, options.edges);
     };
     if (tbb::this_task_arena::max_concurrency() < 2) {
-        after_curvature();
         clock.run(Stage::EdgeSegmentation, find_edges);
         clock.run(Stage::FeatureSegmentation, grow);
     } else {
         // The edge segmentation and the growth of the feature regions read neither's result, and
         // both are mostly serial: the edges go to a second thread while this one grows the
-        // regions. Spawned before after_curvature()'s work, so that the idle thread, which
-        // takes the oldest task, takes them first; were this thread to wait on a task while
-        // that work is still queued, it would take that work up itself, and the growth and the
-        // edges are the chains the rest waits for. If the growth throws (cancelled), the
-        // group's destructor cancels and waits for the edges before `d` goes.
+        // regions. If the growth throws (cancelled), the group's destructor cancels and waits
+        // for the edges before `d` goes.
         tbb::task_group beside;
         beside.run(find_edges);
-        after_curvature();
         clock.run(Stage::FeatureSegmentation, grow);
         clock.run(Stage::EdgeSegmentation, [&] { beside.wait(); });
     }
@@ -268,7 +284,7 @@ Detection detect_bands_calling(const Mesh& mesh, std::shared_ptr<const Connectiv
         d.features = segment_features(mesh, connectivity, d.normals.face, std::move(regions),
                                       d.edges.is_edge, options.features);
     });
-    classify_and_fit_normals(mesh, d, options_for_normals(), clock);
+    classify_and_fit_normals(mesh, d, options, clock);
     return d;
 }
 
@@ -276,9 +292,8 @@ Detection detect_bands_calling(const Mesh& mesh, std::shared_ptr<const Connectiv
 
 Detection detect_bands(const Mesh& mesh, std::shared_ptr<const Connectivity> connectivity,
                        const RestoreOptions& options) {
-    return detect_bands_calling(
-        mesh, std::move(connectivity), options, [] {},
-        [&]() -> const RestoreOptions& { return options; });
+    return detect_bands_calling(mesh, std::move(connectivity), options.stop,
+                                [&]() -> const RestoreOptions& { return options; });
 }
 
 Detection detect_bands(const Mesh& mesh, Connectivity connectivity, const RestoreOptions& options) {
@@ -571,13 +586,13 @@ private:
 
     /// The placement measurement and the detection on the input: both paths start from the
     /// input's detection, and the measurement reads only the mesh. With a second thread in the
-    /// arena the measurement runs beside the detection's segmentations, once its normals and
-    /// curvatures, which run in parallel, are done (up to a quarter of restore()'s time on an
-    /// STL file, issue 11's speed budget); with one, it runs first, so that its buffers are
-    /// gone before the detection allocates (the peak-memory budget). The detection stays on
-    /// the calling thread, which is the one StopWhen::cancelled is promised to be asked from.
-    /// The feature normals wait for the measurement: what they may read off a flat strip
-    /// depends on where the vertices lie (adopt()).
+    /// arena the measurement runs beside the detection's normals and curvatures, which run in
+    /// parallel (it is up to a quarter of restore()'s time on an STL file, issue 11's speed
+    /// budget); with one, it runs first, so that its buffers are gone before the detection
+    /// allocates (the peak-memory budget). The detection stays on the calling thread, which is
+    /// the one StopWhen::cancelled is promised to be asked from. The segmentations wait for the
+    /// measurement: how the regions grow and what the feature normals may read off a flat strip
+    /// depend on where the vertices lie (adopt()).
     void measure_placement_and_detect(const Mesh& mesh,
                                       std::shared_ptr<const Connectivity> connectivity,
                                       PlacementChoice& placement, Detection& detection) {
@@ -587,25 +602,31 @@ private:
             detection = detect_bands(mesh, std::move(connectivity), options_);
             return;
         }
-        tbb::task_group beside;
         // If the detection throws (cancelled), the group's destructor waits for the
         // measurement before `placement` goes out of scope.
-        detection = detect_bands_calling(
-            mesh, std::move(connectivity), options_,
-            [&] { beside.run([&] { placement = choose_placement(mesh); }); },
-            [&]() -> const RestoreOptions& {
-                beside.wait();
-                adopt(placement);
-                return options_;
-            });
+        tbb::task_group beside;
+        beside.run([&] { placement = choose_placement(mesh); });
+        detection = detect_bands_calling(mesh, std::move(connectivity), options_.stop,
+                                         [&]() -> const RestoreOptions& {
+                                             beside.wait();
+                                             adopt(placement);
+                                             return options_;
+                                         });
     }
 
     /// Adapts the options to a mesh whose vertices lie as `choice` says: a flat strip of facets,
     /// or a few faces around a vertex, tell a smooth surface's turn only where the vertices lie
-    /// on the surface (FeatureNormalOptions::vertices_on_surface).
+    /// on the surface (FeatureNormalOptions::vertices_on_surface). Near: every region holds to
+    /// its seed's normal from its first face on (kNearRegionFaces), unless growth is asked to
+    /// go without limit (the paper).
     void adopt(const PlacementChoice& choice) {
         if (choice.placement != VertexPlacement::Exact) {
             options_.normals.vertices_on_surface = false;
+        }
+        FeatureSegmentationOptions& growth = options_.features;
+        if (choice.placement == VertexPlacement::Near && growth.curved_region_faces != 0) {
+            growth.curved_region_faces = kNearRegionFaces;
+            growth.curved_seed_reach = kNearSeedReach;
         }
     }
 

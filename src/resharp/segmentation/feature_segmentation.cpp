@@ -34,6 +34,11 @@ void validate(const FeatureSegmentationOptions& o) {
     if (!(o.merge_angle_deg >= 0.0 && o.merge_angle_deg < 180.0)) {
         throw InvalidInput("merge angle must lie in [0, 180) degrees");
     }
+    if (!(o.curved_seed_reach >= 1.0 && o.curved_seed_reach * o.max_normal_angle_deg < 180.0)) {
+        throw InvalidInput(
+            "curved regions' seed reach must be at least 1 and, times the growing angle, under 180 "
+            "degrees");
+    }
 }
 
 /// The sides of face f in geometric order: its half-edge across from its first corner in
@@ -72,11 +77,12 @@ struct Growth {
     const std::vector<Vec3>& normals;
     double min_cosine;  // of the growing angle
     std::size_t curved_limit;
+    double seed_min_cosine;  // of the angle a limited region keeps to its seed's normal
 };
 
 /// Breadth-first growth of region `id` from `seed` over the faces open(f) holds for, along
 /// `links` (growth_links(): manifold edges whose faces' normals differ by less than the angle);
-/// past `curved_limit` faces (more than 0) only into faces within the angle of the seed. Leaves
+/// past `curved_limit` faces (more than 0) only into faces within the seed's reach. Leaves
 /// the region's faces in `taken`, in the order taken. Until the limit a face's open sides are
 /// crossed in geometric (sweep) order, so the region does not depend on how the mesh numbers
 /// its faces or corners. The links, not the normals, are read until the limit: most of the
@@ -106,7 +112,7 @@ void grow_from(const Growth& g, const std::vector<std::uint8_t>& links, Index se
             const Index v = across[k];
             if (v == kNoIndex || !open(v)) continue;  // (two sides of a face may lead to one)
             const bool limited = taken.size() >= g.curved_limit;
-            if (limited && g.normals[seed].dot(g.normals[v]) <= g.min_cosine) continue;
+            if (limited && g.normals[seed].dot(g.normals[v]) <= g.seed_min_cosine) continue;
             region[v] = id;
             taken.push_back(v);
         }
@@ -177,10 +183,10 @@ struct Regrown {
 };
 
 /// §4 steps 1-3: breadth-first growth across manifold edges while neighbouring face normals
-/// differ by less than the angle. A region holding `curved_limit` faces (0: no limit) only
-/// takes faces within the angle of its seed (FeatureSegmentationOptions::curved_region_faces),
-/// so it depends on where it starts. Every component of the growth relation is grown once
-/// without the limit; one of more than `curved_limit` faces whose normals the limit could
+/// differ by less than the angle. A region holding curved_region_faces faces (0: no limit) only
+/// takes faces within the seed's reach (curved_seed_reach angles) of its seed's normal, so it
+/// depends on where it starts. Every component of the growth relation is grown once without
+/// the limit; one of more than curved_region_faces faces whose normals the limit could
 /// refuse (normals_within_angle()) is grown again with seeds and neighbours in geometric order,
 /// so which faces share a region does not depend on the face order, the corners' rotation or
 /// the orientation (issue 12). Ids follow the face order of the components' first faces; they
@@ -188,10 +194,14 @@ struct Regrown {
 /// again are independent (no growth crosses from one to another), so they grow in parallel,
 /// each numbering its regions from 0 in an array of its own, and take their ids after.
 std::vector<Index> grow_regions(const Mesh& mesh, const Connectivity& c,
-                                const std::vector<Vec3>& normals, double max_angle_deg,
-                                std::size_t curved_limit, std::size_t& region_count) {
-    const Growth unlimited{mesh, c, normals, std::cos(max_angle_deg * kDegree), 0};
-    const Growth limited{mesh, c, normals, unlimited.min_cosine, curved_limit};
+                                const std::vector<Vec3>& normals,
+                                const FeatureSegmentationOptions& o, std::size_t& region_count) {
+    const std::size_t curved_limit = o.curved_region_faces;
+    const double seed_reach_deg = o.curved_seed_reach * o.max_normal_angle_deg;
+    const double min_cosine = std::cos(o.max_normal_angle_deg * kDegree);
+    const Growth unlimited{mesh, c, normals, min_cosine, 0, -1.0};
+    const Growth limited{
+        mesh, c, normals, min_cosine, curved_limit, std::cos(seed_reach_deg * kDegree)};
     std::vector<Index> region(normals.size(), kNoIndex);  // first the component of each face
     std::vector<Index> component;
     std::vector<Regrown> regrown;
@@ -202,7 +212,7 @@ std::vector<Index> grow_regions(const Mesh& mesh, const Connectivity& c,
         if (region[seed] != kNoIndex) continue;
         take_component(c, links, seed, components, region, component);
         if (curved_limit != 0 && component.size() > curved_limit &&
-            !normals_within_angle(normals, component, max_angle_deg)) {
+            !normals_within_angle(normals, component, seed_reach_deg)) {
             regrown.push_back({components, component});
         }
         ++components;
@@ -910,8 +920,7 @@ GrownRegions grow_feature_regions(const Mesh& mesh, const Connectivity& connecti
                                   const FeatureSegmentationOptions& options) {
     validate(options);
     GrownRegions grown;
-    grown.face_region = grow_regions(mesh, connectivity, face_normals, options.max_normal_angle_deg,
-                                     options.curved_region_faces, grown.count);
+    grown.face_region = grow_regions(mesh, connectivity, face_normals, options, grown.count);
     return grown;
 }
 

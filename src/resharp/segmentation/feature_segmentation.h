@@ -36,6 +36,10 @@ struct FeatureSegmentationOptions {
     /// smooth. Planar regions (chamfer bands, flat faces) grow without limit. 0: no limit (the
     /// paper).
     std::size_t curved_region_faces = 300;
+    /// How far from its seed's normal such a limited region still takes faces, in growing
+    /// angles (eps_theta): 1 on exact meshes. restore() takes 1.5 on near-surface meshes, whose
+    /// regions are limited from their seed on, so that a small boss's pieces are not tiny.
+    double curved_seed_reach = 1.0;
     /// Greedy merging (our addition): two patches are never joined, directly or through a chain
     /// of smooth borders, when a patch of one meets a patch of the other at a border of merge
     /// angle or more. False: the paper's plain greedy merging.
