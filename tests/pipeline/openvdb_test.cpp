@@ -561,16 +561,26 @@ TEST(OpenVdbMesher, AFrustumsConcaveCircleComesBackOnTheCircle) {
     expect_circle_on_the_plate_back(frustum_on_a_plate(), 4.0, 0.2);
 }
 
-/// examples/cad/`file` by OpenVDB at 100 cells (its pitch into `h`), its voxel centres the nodes
-/// `resharp simulate --solid --cells 100` samples on, from the solid sampled at h / 4.
-Mesh openvdb_cad_part(const std::string& file, double& h) {
+/// examples/cad/`file` by OpenVDB at 100 cells (pitch `h`), its voxel centres the nodes `resharp
+/// simulate --solid --cells 100` samples on, from the solid sampled at h / 4, and its restoration
+/// with the default options.
+struct OpenVdbCadPart {
+    double h = 0.0;
+    Mesh input;
+    RestoreResult restored;
+};
+
+OpenVdbCadPart restored_openvdb_cad_part(const std::string& file) {
     const sim::CsgSolid solid(
         sim::read_csg(std::string(RESHARP_SOURCE_DIR) + "/examples/cad/" + file));
-    h = sim::pitch_for_cells(solid.bounds(), 100);
+    OpenVdbCadPart part;
+    part.h = sim::pitch_for_cells(solid.bounds(), 100);
     const sim::DexelGrid fine =
-        sim::sample_solid(sim::phased_grid(solid.bounds(), h / 4, 0.4142), solid);
-    const Vec3 centres = sim::phased_grid(solid.bounds(), h, 0.4142).origin;
-    return extras::openvdb_dual_mesh(sim::mesh_dexels(fine, {}).mesh, h, centres);
+        sim::sample_solid(sim::phased_grid(solid.bounds(), part.h / 4, 0.4142), solid);
+    const Vec3 centres = sim::phased_grid(solid.bounds(), part.h, 0.4142).origin;
+    part.input = extras::openvdb_dual_mesh(sim::mesh_dexels(fine, {}).mesh, part.h, centres);
+    part.restored = restore(part.input, {});
+    return part;
 }
 
 /// The horizontal circle of `radius` about `centre`, as points a tenth of a pitch apart or less
@@ -592,14 +602,11 @@ std::vector<Vec3> circle_points(const Vec3& centre, double radius) {
 // in front of both faces, where the flat face's rows are displaced too, now goes to their
 // junction: within 0.15 of a pitch of a crease 0.26 -> 0.43 of the circle (0 before restoring).
 TEST(OpenVdbMesher, ASpherePartsDomeCircleComesBackOnTheCircle) {
-    double h = 0.0;
-    const Mesh input = openvdb_cad_part("sphere_part.json", h);
-    const RestoreOptions options;
-    const RestoreResult r = restore(input, options);
+    const OpenVdbCadPart part = restored_openvdb_cad_part("sphere_part.json");
     const std::vector<Vec3> circle = circle_points(Vec3(25, 20, 15), 9.798);
-    EXPECT_LT(share_beside_a_crease(input, circle, 0.15 * h), 0.05);
-    EXPECT_GT(share_beside_a_crease(r.mesh, circle, 0.15 * h), 0.38);
-    test::expect_no_harm(input, r, options);
+    EXPECT_LT(share_beside_a_crease(part.input, circle, 0.15 * part.h), 0.05);
+    EXPECT_GT(share_beside_a_crease(part.restored.mesh, circle, 0.15 * part.h), 0.38);
+    test::expect_no_harm(part.input, part.restored, {});
 }
 
 // examples/cad/cone_part.json by OpenVDB at 100 cells: its round base (radius 20 mm) has a
@@ -609,17 +616,15 @@ TEST(OpenVdbMesher, ASpherePartsDomeCircleComesBackOnTheCircle) {
 // their seed's normal (docs/method.md, *Regions held to their seed*) keep the three apart: within
 // 0.15 of a pitch of a crease 0.50 -> 0.99 of the top circle, 0.40 -> 0.93 of the lower.
 TEST(OpenVdbMesher, AConePartsChamferCirclesComeBack) {
-    double h = 0.0;
-    const Mesh input = openvdb_cad_part("cone_part.json", h);
-    const RestoreOptions options;
-    const RestoreResult r = restore(input, options);
+    const OpenVdbCadPart part = restored_openvdb_cad_part("cone_part.json");
+    const double tolerance = 0.15 * part.h;
     const std::vector<Vec3> top = circle_points(Vec3(0, 0, 8), 18);
     const std::vector<Vec3> lower = circle_points(Vec3(0, 0, 6), 20);
-    EXPECT_LT(share_beside_a_crease(input, top, 0.15 * h), 0.05);
-    EXPECT_LT(share_beside_a_crease(input, lower, 0.15 * h), 0.05);
-    EXPECT_GT(share_beside_a_crease(r.mesh, top, 0.15 * h), 0.9);
-    EXPECT_GT(share_beside_a_crease(r.mesh, lower, 0.15 * h), 0.85);
-    test::expect_no_harm(input, r, options);
+    EXPECT_LT(share_beside_a_crease(part.input, top, tolerance), 0.05);
+    EXPECT_LT(share_beside_a_crease(part.input, lower, tolerance), 0.05);
+    EXPECT_GT(share_beside_a_crease(part.restored.mesh, top, tolerance), 0.9);
+    EXPECT_GT(share_beside_a_crease(part.restored.mesh, lower, tolerance), 0.85);
+    test::expect_no_harm(part.input, part.restored, {});
 }
 
 /// A hub of radius 8 mm (16 pitches) along x on a flange of radius 12 mm, turned as turn_of(0.45)
