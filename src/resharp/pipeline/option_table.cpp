@@ -86,7 +86,9 @@ const std::array<OptionInfo, 26> kTable{{
      ValueField<double>{&nested<&R::features, &FeatureSegmentationOptions::merge_angle_deg>}},
     {"curved-region-faces",
      "a region this large only grows into faces near its seed's normal, so growth cannot creep "
-     "around a scallop cusp; 0 grows without limit (paper)",
+     "around a scallop cusp; 0 grows without limit (paper); on near-surface meshes any other "
+     "value holds every region to its seed from its first face, within 1.5 times the region "
+     "angle",
      ValueField<std::size_t>{
          &nested<&R::features, &FeatureSegmentationOptions::curved_region_faces>},
      true},
