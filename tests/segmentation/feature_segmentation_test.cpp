@@ -165,7 +165,8 @@ Mesh rounded_edge(std::vector<double>& slope) {
 
 // Growth under the growing angle (8 degrees) creeps over a rounding whose rows turn by less,
 // and takes both faces into one region; held to its seed's normal from its first face on,
-// within 1.5 growing angles (restore()'s near-surface settings), no region takes faces of both.
+// within 1.5 growing angles (held_to_seed(), restore()'s near-surface settings), no region
+// takes faces of both.
 TEST(FeatureSegmentation, RegionsHeldToTheirSeedStopAtARoundedEdge) {
     std::vector<double> slope;
     const Mesh mesh = rounded_edge(slope);
@@ -180,8 +181,7 @@ TEST(FeatureSegmentation, RegionsHeldToTheirSeedStopAtARoundedEdge) {
     };
     const GrownRegions unlimited = grow_feature_regions(mesh, c, fn, {.curved_region_faces = 0});
     EXPECT_EQ(unlimited.count, 1u);
-    const GrownRegions held =
-        grow_feature_regions(mesh, c, fn, {.curved_region_faces = 1, .curved_seed_reach = 1.5});
+    const GrownRegions held = grow_feature_regions(mesh, c, fn, held_to_seed({}));
     const std::set<Index> flat = regions_of(0.0, held), steep = regions_of(45.0, held);
     EXPECT_EQ(flat.size(), 1u);
     EXPECT_EQ(steep.size(), 1u);

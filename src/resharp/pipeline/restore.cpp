@@ -62,25 +62,6 @@ namespace {
 /// exact surface 112 -> 79), frogface 0.811 -> 0.801, for about 7 % more time on mech.
 constexpr int kMidpointPatchRounds = 3;
 
-/// Near: the faces a region takes before it holds to its seed's normal
-/// (FeatureSegmentationOptions::curved_region_faces, 300 on exact meshes), here one: the seed.
-/// A dual mesher rounds a sharp edge over the cells it crosses, in steps of a few degrees from
-/// face to face, so that growth under the growing angle crept from a face over the rounding onto
-/// the next face: cone_part aligned by OpenVDB at 100 cells came out of region growing with its
-/// top and its 45-degree chamfer in one region, and with them its cylinder. Held to the seed, a
-/// region ends where the faces have turned by the angle; curved faces come out in pieces, which
-/// merging joins again, as on exact meshes past 300 faces (docs/method.md, *Regions held to
-/// their seed*: OpenVDB's mean Edge F-score on the CAD corpus and the benchmark parts 0.808 ->
-/// 0.830, cone_part aligned 0.655 -> 0.821).
-constexpr std::size_t kNearRegionFaces = 1;
-/// Near: how far from its seed's normal a region still takes faces, in growing angles
-/// (FeatureSegmentationOptions::curved_seed_reach; 1 on exact meshes). Held within the growing
-/// angle itself, a boss 6.6 cells in radius came out in pieces two cells wide, tiny patches,
-/// and 0.21 of its circle on the plate came back on a crease (OpenVdbMesher's test asks 0.25);
-/// the mean Edge F-score above was 0.827 at 1, 0.828 at 1.25, 0.830 at 1.5, 0.827 at 1.875
-/// and 0.824 at 2.5.
-constexpr double kNearSeedReach = 1.5;
-
 void validate_mesh(const Mesh& mesh) {
     if (mesh.triangles.empty()) throw InvalidInput("the mesh has no triangles");
     for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
@@ -616,17 +597,14 @@ private:
 
     /// Adapts the options to a mesh whose vertices lie as `choice` says: a flat strip of facets,
     /// or a few faces around a vertex, tell a smooth surface's turn only where the vertices lie
-    /// on the surface (FeatureNormalOptions::vertices_on_surface). Near: every region holds to
-    /// its seed's normal from its first face on (kNearRegionFaces), unless growth is asked to
-    /// go without limit (the paper).
+    /// on the surface (FeatureNormalOptions::vertices_on_surface). Near: regions grow held to
+    /// their seeds (held_to_seed()).
     void adopt(const PlacementChoice& choice) {
         if (choice.placement != VertexPlacement::Exact) {
             options_.normals.vertices_on_surface = false;
         }
-        FeatureSegmentationOptions& growth = options_.features;
-        if (choice.placement == VertexPlacement::Near && growth.curved_region_faces != 0) {
-            growth.curved_region_faces = kNearRegionFaces;
-            growth.curved_seed_reach = kNearSeedReach;
+        if (choice.placement == VertexPlacement::Near) {
+            options_.features = held_to_seed(options_.features);
         }
     }
 

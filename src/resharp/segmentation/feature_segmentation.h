@@ -37,8 +37,7 @@ struct FeatureSegmentationOptions {
     /// paper).
     std::size_t curved_region_faces = 300;
     /// How far from its seed's normal such a limited region still takes faces, in growing
-    /// angles (eps_theta): 1 on exact meshes. restore() takes 1.5 on near-surface meshes, whose
-    /// regions are limited from their seed on, so that a small boss's pieces are not tiny.
+    /// angles (eps_theta): 1 on exact meshes; held_to_seed() gives near-surface meshes more.
     double curved_seed_reach = 1.0;
     /// Greedy merging (our addition): two patches are never joined, directly or through a chain
     /// of smooth borders, when a patch of one meets a patch of the other at a border of merge
@@ -97,6 +96,12 @@ struct GrownRegions {
 GrownRegions grow_feature_regions(const Mesh& mesh, const Connectivity& connectivity,
                                   const std::vector<Vec3>& face_normals,
                                   const FeatureSegmentationOptions& options = {});
+
+/// Takes `options`; gives them as restore() grows the regions of a near-surface mesh with: every
+/// region held to its seed's normal from its first face on, within 1.5 growing angles
+/// (curved_region_faces 1, curved_seed_reach 1.5), so that growth does not creep over the rows
+/// by which a dual mesher rounds a sharp edge. Growth without limit (0, the paper) stays so.
+FeatureSegmentationOptions held_to_seed(FeatureSegmentationOptions options);
 
 /// Takes the mesh, its connectivity, unit face normals (#F), the regions grow_feature_regions()
 /// gave for them with the same options, and the edge-vertex labels of segment_edges (#V);
