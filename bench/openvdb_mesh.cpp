@@ -20,10 +20,10 @@
 #include "openvdb_mesher.h"
 #include "resharp/core/errors.h"
 #include "resharp/eval/evaluation_files.h"
-#include "resharp/eval/uniform_grid.h"
 #include "resharp/io/mesh_io.h"
 #include "resharp/mesh/connectivity.h"
 #include "resharp/mesh/diagnostics.h"
+#include "resharp/mesh/uniform_grid.h"
 #include "resharp/sim/csg_file.h"
 #include "resharp/sim/job.h"
 #include "resharp/sim/simulate.h"
@@ -93,10 +93,9 @@ eval::Oracle dual_oracle(const Mesh& fine, const eval::Oracle& oracle, const Mes
     const auto surface_point = [&](std::size_t v) {
         return oracle.surface_points.empty() ? fine.positions[v] : oracle.surface_points[v];
     };
-    const eval::detail::UniformGrid grid(
+    const detail::UniformGrid grid(
         fine.vertex_count(),
-        [&](std::size_t v) { return eval::detail::Box3(surface_point(v), surface_point(v)); },
-        pitch);
+        [&](std::size_t v) { return detail::Box3(surface_point(v), surface_point(v)); }, pitch);
     eval::Oracle out;
     for (const Vec3& p : dual.positions) {
         const Index x =

@@ -4,8 +4,8 @@
 #include <map>
 
 #include "resharp/core/errors.h"
-#include "resharp/eval/uniform_grid.h"
 #include "resharp/mesh/connectivity.h"
+#include "resharp/mesh/uniform_grid.h"
 
 namespace resharp::eval {
 namespace {

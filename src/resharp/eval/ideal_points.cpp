@@ -5,8 +5,8 @@
 #include <numbers>
 
 #include "resharp/core/errors.h"
-#include "resharp/eval/uniform_grid.h"
 #include "resharp/mesh/connectivity.h"
+#include "resharp/mesh/uniform_grid.h"
 #include "resharp/restoration/sharp_points.h"
 
 namespace resharp::eval {

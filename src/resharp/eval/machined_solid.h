@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "resharp/eval/exact_surface.h"
-#include "resharp/eval/uniform_grid.h"
+#include "resharp/mesh/uniform_grid.h"
 #include "resharp/sim/gcode.h"
 #include "resharp/sim/simulate.h"
 

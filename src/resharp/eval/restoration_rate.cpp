@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "resharp/core/errors.h"
-#include "resharp/eval/uniform_grid.h"
+#include "resharp/mesh/uniform_grid.h"
 
 namespace resharp::eval {
 namespace {

@@ -9,8 +9,8 @@
 #include <numeric>
 
 #include "resharp/core/errors.h"
-#include "resharp/eval/uniform_grid.h"
 #include "resharp/mesh/geometry.h"
+#include "resharp/mesh/uniform_grid.h"
 
 namespace resharp::eval {
 namespace {

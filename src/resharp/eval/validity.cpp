@@ -8,9 +8,9 @@
 #include "resharp/core/errors.h"
 #include "resharp/eval/restoration_rate.h"
 #include "resharp/eval/self_intersections.h"
-#include "resharp/eval/uniform_grid.h"
 #include "resharp/mesh/diagnostics.h"
 #include "resharp/mesh/geometry.h"
+#include "resharp/mesh/uniform_grid.h"
 
 namespace resharp::eval {
 namespace {

@@ -1,6 +1,7 @@
 #pragma once
-/// Internal to resharp::eval: a uniform grid of axis-aligned boxes for nearest-item and radius
-/// queries over millions of samples or triangles.
+/// Internal to resharp: a uniform grid of axis-aligned boxes for nearest-item, radius and box
+/// queries over millions of samples or triangles (the evaluator's distances, the harm check's
+/// input faces beyond the rings it walks).
 ///
 /// Why our own grid and not CGAL's AABB tree: every query here starts within a cell or two of its
 /// answer (samples lie on or next to the surface they are measured against, at spacing below the
@@ -19,7 +20,7 @@
 #include "resharp/core/types.h"
 #include "resharp/mesh/mesh.h"
 
-namespace resharp::eval::detail {
+namespace resharp::detail {
 
 using Box3 = Eigen::AlignedBox3d;
 
@@ -116,4 +117,4 @@ Box3 face_box(const Mesh& mesh, Index f);
 /// The faces of `mesh` filed by their boxes, for nearest-face and radius queries.
 UniformGrid face_grid(const Mesh& mesh, double cell);
 
-}  // namespace resharp::eval::detail
+}  // namespace resharp::detail

@@ -1,9 +1,9 @@
-#include "resharp/eval/uniform_grid.h"
+#include "resharp/mesh/uniform_grid.h"
 
 #include <cmath>
 #include <limits>
 
-namespace resharp::eval::detail {
+namespace resharp::detail {
 
 UniformGrid::UniformGrid(std::size_t count, const std::function<Box3(std::size_t)>& box_of,
                          double cell, std::size_t max_cells) {
@@ -69,4 +69,4 @@ UniformGrid face_grid(const Mesh& mesh, double cell) {
         mesh.face_count(), [&](std::size_t f) { return face_box(mesh, Index(f)); }, cell);
 }
 
-}  // namespace resharp::eval::detail
+}  // namespace resharp::detail

@@ -1,10 +1,10 @@
-#include "resharp/eval/uniform_grid.h"
+#include "resharp/mesh/uniform_grid.h"
 
 #include <gtest/gtest.h>
 
 #include <random>
 
-namespace resharp::eval {
+namespace resharp {
 namespace {
 
 using detail::Box3;
@@ -57,4 +57,4 @@ TEST(UniformGrid, EmptyGridHasNoNearest) {
 }
 
 }  // namespace
-}  // namespace resharp::eval
+}  // namespace resharp
