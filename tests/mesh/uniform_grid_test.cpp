@@ -50,6 +50,28 @@ TEST(UniformGrid, ForEachNearVisitsEveryItemWithinRadius) {
     }
 }
 
+// Every item whose box meets the query box is visited, boxes spanning several cells included,
+// and for a query box off the grid's side too.
+TEST(UniformGrid, ForEachMeetingVisitsEveryItemWhoseBoxMeetsTheBox) {
+    const auto corners = random_points(2000, 5.0, 5);
+    auto box_of = [&](std::size_t i) {
+        return Box3(corners[i], corners[i] + Vec3(0.4, 0.1, 0.7) * double(i % 3));
+    };
+    const UniformGrid grid(corners.size(), box_of, 0.3);
+    for (const Box3& query : {Box3(Vec3(1.0, 2.0, 0.5), Vec3(1.6, 2.2, 3.0)),
+                              Box3(Vec3(-2.0, 3.5, 3.5), Vec3(0.6, 9.0, 9.0))}) {
+        std::vector<bool> seen(corners.size(), false);
+        grid.for_each_meeting(query, [&](Index k) { seen[k] = true; });
+        std::size_t meeting = 0;
+        for (std::size_t k = 0; k < corners.size(); ++k) {
+            if (!box_of(k).intersects(query)) continue;
+            ++meeting;
+            EXPECT_TRUE(seen[k]) << k;
+        }
+        EXPECT_GT(meeting, 5u);
+    }
+}
+
 TEST(UniformGrid, EmptyGridHasNoNearest) {
     const UniformGrid grid(
         0, [](std::size_t) { return Box3(); }, 1.0);

@@ -10,9 +10,9 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdlib>
-#include <functional>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -26,9 +26,13 @@ using Box3 = Eigen::AlignedBox3d;
 
 class UniformGrid {
 public:
-    /// Files items 0..count-1 by their boxes (`box_of(i)`) into cells of edge about `cell`
-    /// (enlarged so that the grid has at most `max_cells` cells).
-    UniformGrid(std::size_t count, const std::function<Box3(std::size_t)>& box_of, double cell,
+    UniformGrid() = default;  ///< empty: no items
+
+    /// Files items 0..count-1 by their boxes (`box_of(i)`, asked three times an item: keeping
+    /// the boxes would take 48 bytes an item) into cells of edge about `cell` (enlarged so that
+    /// the grid has at most `max_cells` cells).
+    template <class BoxOf>
+    UniformGrid(std::size_t count, BoxOf&& box_of, double cell,
                 std::size_t max_cells = std::size_t{1} << 26);
 
     /// The item with the smallest `distance(item)` from p, as (item, distance), searched in
@@ -41,10 +45,43 @@ public:
     /// `radius` around p (a superset of the items within radius; an item may come twice when
     /// its box spans cells).
     template <class Visit>
-    void for_each_near(const Vec3& p, double radius, Visit&& visit) const;
+    void for_each_near(const Vec3& p, double radius, Visit&& visit) const {
+        const Vec3 r = Vec3::Constant(radius);
+        for_each_meeting(Box3(p - r, p + r), visit);
+    }
+
+    /// Whether some item is filed in a cell that meets `box` (so, a box meeting an item's box
+    /// always answers true).
+    bool any_filed_meeting(const Box3& box) const {
+        bool any = false;
+        for_cells(box, [&](std::size_t c) { any = any || start_[c + 1] > start_[c]; });
+        return any;
+    }
+
+    /// Calls visit(item) for every item filed in a cell that meets `box` (a superset of the
+    /// items whose boxes meet it; an item may come twice when its box spans cells).
+    template <class Visit>
+    void for_each_meeting(const Box3& box, Visit&& visit) const;
 
 private:
-    Eigen::Vector3i cell_of(const Vec3& p) const;
+    /// The cell holding p, clamped to the grid (NaN coordinates to 0).
+    Eigen::Vector3i cell_of(const Vec3& p) const {
+        Eigen::Vector3i c;
+        for (int a = 0; a < 3; ++a) {
+            // Truncation is the floor where it is not clamped: above 0.
+            const double t = (p[a] - origin_[a]) / cell_;
+            c[a] = !(t > 0.0) ? 0 : t >= dims_[a] - 1 ? dims_[a] - 1 : static_cast<int>(t);
+        }
+        return c;
+    }
+    /// Calls f(linear cell) for every cell that box b meets.
+    template <class F>
+    void for_cells(const Box3& b, F&& f) const {
+        const Eigen::Vector3i lo = cell_of(b.min()), hi = cell_of(b.max());
+        for (int z = lo.z(); z <= hi.z(); ++z)
+            for (int y = lo.y(); y <= hi.y(); ++y)
+                for (int x = lo.x(); x <= hi.x(); ++x) f(linear(x, y, z));
+    }
     /// How far p may move before it leaves the box of cells [lo, hi], ignoring sides where the
     /// box reaches the end of the grid (no items lie beyond them).
     double distance_to_box_boundary(const Vec3& p, const Eigen::Vector3i& lo,
@@ -61,17 +98,40 @@ private:
     Vec3 origin_ = Vec3::Zero();
     double cell_ = 1.0;
     Eigen::Vector3i dims_{1, 1, 1};
-    std::vector<std::size_t> start_;  // CSR: cell c holds items_[start_[c] .. start_[c + 1])
+    std::vector<std::size_t> start_{0, 0};  // CSR: cell c holds items_[start_[c] .. start_[c + 1])
     std::vector<Index> items_;
 };
 
+template <class BoxOf>
+UniformGrid::UniformGrid(std::size_t count, BoxOf&& box_of, double cell, std::size_t max_cells) {
+    if (count == 0) return;
+    Box3 bounds;
+    for (std::size_t i = 0; i < count; ++i) bounds.extend(box_of(i));
+    const Vec3 extent = bounds.sizes();
+    cell_ = cell;
+    for (;;) {  // Bound: the cell grows by half each time until the cells fit
+        dims_ = ((extent / cell_).array().floor() + 1.0).cast<int>().matrix();
+        if (static_cast<double>(dims_.x()) * dims_.y() * dims_.z() <= double(max_cells)) break;
+        cell_ *= 1.5;
+    }
+    origin_ = bounds.min();
+    // Two passes, count then scatter, so no cell owns an allocation.
+    start_.assign(static_cast<std::size_t>(dims_.prod()) + 1, 0);
+    for (std::size_t i = 0; i < count; ++i)
+        for_cells(box_of(i), [&](std::size_t c) { ++start_[c + 1]; });
+    for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+    items_.resize(start_.back());
+    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    for (std::size_t i = 0; i < count; ++i) {
+        for_cells(box_of(i), [&](std::size_t c) { items_[fill[c]++] = static_cast<Index>(i); });
+    }
+}
+
 template <class Visit>
-void UniformGrid::for_each_near(const Vec3& p, double radius, Visit&& visit) const {
-    const Vec3 r = Vec3::Constant(radius);
-    const Eigen::Vector3i lo = cell_of(p - r), hi = cell_of(p + r);
-    for (int z = lo.z(); z <= hi.z(); ++z)
-        for (int y = lo.y(); y <= hi.y(); ++y)
-            for (int x = lo.x(); x <= hi.x(); ++x) visit_cell(x, y, z, visit);
+void UniformGrid::for_each_meeting(const Box3& box, Visit&& visit) const {
+    for_cells(box, [&](std::size_t c) {
+        for (std::size_t k = start_[c]; k < start_[c + 1]; ++k) visit(items_[k]);
+    });
 }
 
 template <class Distance>

@@ -12,10 +12,13 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "resharp/core/assert.h"
 #include "resharp/core/errors.h"
 #include "resharp/mesh/geometry.h"
+#include "resharp/mesh/uniform_grid.h"
 #include "resharp/restoration/clearance.h"
 #include "resharp/restoration/outer_box.h"
 #include "resharp/restoration/simple_fan.h"
@@ -114,7 +117,11 @@ struct FaceVerdict {
 /// which this check sets, by 2 to 6 %.
 struct Scratch {
     std::vector<std::uint8_t> vertex_mark, face_mark;
-    std::vector<Index> vertices, faces;
+    std::vector<Index> vertices;
+    /// The candidates: the faces within two rings (the first ring_count), then the faces
+    /// beyond them that the turned check weighs too (HarmChecker::find_far_candidates()).
+    std::vector<Index> faces;
+    std::size_t ring_count = 0;
     std::vector<Box3> boxes;
     /// per face and piece of the split face judged: the piece turns against the face
     Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic> against;
@@ -235,6 +242,7 @@ public:
         if (!moved_.empty()) make_unmoved_normals();
         choose_judged(changed);
         describe_pieces();
+        find_far_candidates();
         if (check_crossings_) find_simple_fans();
     }
 
@@ -454,6 +462,7 @@ private:
     FaceVerdict judge(Index i, Scratch& scratch) const {
         const Index f = split_.face(i);
         gather_two_rings(f, scratch);
+        for (Index k = far_first_[i]; k < far_first_[i + 1]; ++k) add_candidate(far_[k], scratch);
         FaceVerdict verdict;
         const std::array<bool, 6> against = turning_against_some(i, scratch);
         const bool may_fold = may_fold_anywhere(i);
@@ -464,7 +473,10 @@ private:
             }
             if (may_fold) verdict.folded += is_folded(i, k);
         }
-        if (check_crossings_) verdict.crossing += count_crossing_pieces(i, scratch.faces);
+        if (check_crossings_) {
+            verdict.crossing += count_crossing_pieces(
+                i, std::span<const Index>(scratch.faces).first(scratch.ring_count));
+        }
         return verdict;
     }
 
@@ -487,12 +499,135 @@ private:
             }
         }
         for (Index u : scratch.vertices) {
-            for (Index g : input_.connectivity.faces_around(u)) {
-                if (scratch.face_mark[g]) continue;
-                scratch.face_mark[g] = 1;
-                scratch.faces.push_back(g);
+            for (Index g : input_.connectivity.faces_around(u)) add_candidate(g, scratch);
+        }
+        scratch.ring_count = scratch.faces.size();
+    }
+
+    static void add_candidate(Index g, Scratch& scratch) {
+        if (scratch.face_mark[g]) return;
+        scratch.face_mark[g] = 1;
+        scratch.faces.push_back(g);
+    }
+
+    /// Per judged split face, the input faces beyond the face itself that its turned check (a)
+    /// weighs besides the two rings, as the do-no-harm criterion counts the input faces nearest
+    /// a query point anywhere (docs/method.md): the other side of a thin wall or web, nearer to
+    /// a new point than its own face. Those are the faces whose boxes meet its reach box
+    /// (reach_box_of()) and share no vertex with it, where one of them turns against one of its
+    /// pieces. Where none does, they could only show a piece not turned that the rings alone
+    /// call turned: leaving them out then refuses more, never less, and spares the judging most
+    /// of them. Found in one pass over the input's faces against a grid of the reach boxes;
+    /// faces within the rings may come again (judge() takes each once).
+    void find_far_candidates() {
+        far_first_.assign(split_.size() + 1, 0);
+        if (judged_list_.empty()) return;
+        std::vector<Box3> reach(judged_list_.size());
+        tbb::parallel_for(std::size_t{0}, judged_list_.size(),
+                          [&](std::size_t k) { reach[k] = reach_box_of(judged_list_[k]); });
+        Box3 all;
+        double size = 0.0;
+        for (std::size_t k = 0; k < reach.size(); ++k) {
+            all.extend(reach[k]);
+            size += input_face_box(split_.face(judged_list_[k])).sizes().maxCoeff();
+        }
+        // Cells of twice the judged faces' mean size, at most eight per judged face: a face's
+        // box meets a few, each holding a few reach boxes, and no cell array spans the part's
+        // volume at the scale of its faces (fresh pages cost more than the queries).
+        const double mean_cell = 2.0 * size / double(reach.size());
+        const detail::UniformGrid grid(
+            reach.size(), [&](std::size_t k) { return reach[k]; },
+            mean_cell > 0.0 ? mean_cell : 1.0, 8 * reach.size());
+        // (split face number, input face): faces beyond the face that turn against one of its
+        // pieces, and the others, which count only beside one that does.
+        using Pair = std::pair<Index, Index>;
+        struct Found {
+            std::vector<Pair> turned, others;
+        };
+        tbb::enumerable_thread_specific<Found> found;
+        using Range = tbb::blocked_range<Index>;
+        tbb::parallel_for(Range(0, static_cast<Index>(input_.mesh.face_count())),
+                          [&](const Range& range) {
+                              Found& mine = found.local();
+                              for (Index g = range.begin(); g != range.end(); ++g) {
+                                  const Box3 box = input_face_box(g);
+                                  if (!box.intersects(all)) continue;
+                                  grid.for_each_meeting(box, [&](Index k) {
+                                      const Index i = judged_list_[k];
+                                      if (!reach[k].intersects(box) || touches_face(i, g)) return;
+                                      (turns_against_a_piece(i, g) ? mine.turned : mine.others)
+                                          .emplace_back(i, g);
+                                  });
+                              }
+                          });
+        std::vector<std::uint8_t> has_turned(split_.size(), 0);
+        for (const Found& mine : found) {
+            for (const Pair& p : mine.turned) has_turned[p.first] = 1;
+        }
+        std::vector<Pair> pairs;
+        for (const Found& mine : found) {
+            pairs.insert(pairs.end(), mine.turned.begin(), mine.turned.end());
+            for (const Pair& p : mine.others) {
+                if (has_turned[p.first]) pairs.push_back(p);
             }
         }
+        std::sort(pairs.begin(), pairs.end());
+        pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+        for (const Pair& p : pairs) ++far_first_[p.first + 1];
+        for (std::size_t i = 1; i < far_first_.size(); ++i) far_first_[i] += far_first_[i - 1];
+        far_.reserve(pairs.size());
+        for (const Pair& p : pairs) far_.push_back(p.second);
+    }
+
+    /// Whether input face g shares a vertex with split face i's input face.
+    bool touches_face(Index i, Index g) const {
+        const Triangle& t = input_.mesh.triangles[split_.face(i)];
+        const Triangle& u = input_.mesh.triangles[g];
+        return std::any_of(u.begin(), u.end(),
+                           [&](Index v) { return v == t[0] || v == t[1] || v == t[2]; });
+    }
+
+    /// Whether input face g turns against one of split face i's pieces.
+    bool turns_against_a_piece(Index i, Index g) const {
+        for (Index k = 0; k < split_.piece_count(i); ++k) {
+            if (turns_against(piece_normal(i, k), g)) return true;
+        }
+        return false;
+    }
+
+    /// The box of split face i's pieces widened by the farthest of their corners from its face
+    /// (at its input place), and the tie: every input face nearer one of the pieces' query points
+    /// (is_turned()) than the face itself meets it. A centroid is no farther from the face than
+    /// its piece's farthest corner (the distance to a triangle is convex), and an input vertex is
+    /// one of the face's corners.
+    Box3 reach_box_of(Index i) const {
+        const Index f = split_.face(i);
+        const auto& x = output_.mesh.positions;
+        Box3 box;
+        double reach = 0.0;  // squared
+        for (Index k = 0; k < split_.piece_count(i); ++k) {
+            for (Index v : piece_triangle(i, k)) {
+                box.extend(x[v]);
+                if (!is_input_vertex(v)) reach = std::max(reach, distance_squared(x[v], f));
+            }
+        }
+        const Vec3 margin = Vec3::Constant(std::sqrt(reach) + tie_of(f));
+        return Box3(box.min() - margin, box.max() + margin);
+    }
+
+    /// The box of input face g at its input place.
+    Box3 input_face_box(Index g) const {
+        const Triangle& t = input_.mesh.triangles[g];
+        const Vec3 &a = input_positions_[t[0]], &b = input_positions_[t[1]],
+                   &c = input_positions_[t[2]];
+        return Box3(a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c));
+    }
+
+    /// Distances to a query point that differ by no more than this count as equal (see
+    /// turned_at_point()).
+    double tie_of(Index f) const {
+        return kTouchRatio *
+               std::sqrt(longest_edge_squared(input_positions_, input_.mesh.triangles[f]));
     }
 
     /// The boxes of scratch.faces, made the first time a piece of the face needs them.
@@ -581,9 +716,7 @@ private:
             against = std::min(against, distance_squared(q, candidates.faces[j]));
         }
         if (against == kInfinity) return false;  // no face turned against is near enough
-        const double tie = kTouchRatio * std::sqrt(longest_edge_squared(input_positions_,
-                                                                        input_.mesh.triangles[f]));
-        const double reach = std::sqrt(against) + tie;  // as near as the faces turned against
+        const double reach = std::sqrt(against) + tie_of(f);  // as near as the faces turned against
         if (!(reach < std::sqrt(other))) return false;
         for (std::size_t j = 0; j < candidates.faces.size(); ++j) {
             const Index g = candidates.faces[j];
@@ -690,7 +823,7 @@ private:
     /// symmetric); a crossing with another split face blames it too. Faces wholly beyond the
     /// face's cap plane (see cap_of) cannot reach its pieces; which pairs need a test, may_meet
     /// says.
-    std::uint32_t count_crossing_pieces(Index i, const std::vector<Index>& candidates) const {
+    std::uint32_t count_crossing_pieces(Index i, std::span<const Index> candidates) const {
         const Index f = split_.face(i);
         const Index count = split_.piece_count(i);
         std::array<std::optional<Shape>, 6> own;
@@ -815,6 +948,10 @@ private:
     std::vector<std::uint8_t> judged_;     ///< per split face: judged by this check
     std::vector<std::uint8_t> described_;  ///< per split face: its pieces' normals made
     std::vector<Index> judged_list_;       ///< the judged split faces, ascending
+    /// Per split face (#S + 1, CSR): its far candidates (find_far_candidates()) are
+    /// far_[far_first_[i] .. far_first_[i + 1]).
+    std::vector<Index> far_first_;
+    std::vector<Index> far_;
     /// Per output vertex (#V out), with the crossing check: 1 where is_simple_fan() holds (only
     /// vertices of judged split faces are looked at).
     std::vector<std::uint8_t> simple_fan_;

@@ -24,7 +24,7 @@ struct HarmCheckOptions {
 
 struct HarmReport {
     /// Pieces turned more than 90 degrees against every input face nearest their centroid or
-    /// one of their vertices (searched within two rings of their source face), or of no area.
+    /// one of their vertices (searched over the whole input), or of no area.
     std::size_t turned = 0;
     std::size_t folded = 0;    ///< pieces folded onto an adjacent output face
     std::size_t crossing = 0;  ///< pieces meeting, or coming within rounding of, a nearby face
@@ -65,12 +65,17 @@ struct MovedVertices {
 ///   more than the tolerance (the separating axes the test itself would reach last).
 /// On the benchmark parts this changes no verdict.
 ///
+/// The turned check (a) weighs the input faces within two rings and, found by one pass over the
+/// input's faces, those beyond that turn against a piece and may come as near it as its own face
+/// (the other side of a thin wall).
+///
 /// A later round may pass `changed` (#F): the input faces whose pieces differ from those of an
 /// earlier split this check judged, every face it found harmful among them. Then only the split
 /// faces within two rings of a changed face are judged: a face's verdict depends on nothing but
-/// its own pieces and those of the faces within two rings of it, so elsewhere it stands (no
-/// harm). The counts then cover the judged faces alone. Empty: every split face is judged.
-/// \throws InvalidInput if the fold angle is not in (90, 180], `changed` is neither empty nor
+/// its own pieces, those of the faces within two rings of it and the input faces (the same in
+/// every round), so elsewhere it stands (no harm). The counts then cover the judged faces alone.
+/// Empty: every split face is judged. \throws InvalidInput if the fold angle is not in (90, 180],
+/// `changed` is neither empty nor
 ///         one flag per input face, or `moves` neither empty nor one flag and one input place
 ///         per input vertex.
 HarmReport check_harm(const InputSurface& input, const SplitMesh& output,
