@@ -34,6 +34,32 @@ TEST(HarmCheck, APieceTurnedOverIsHarm) {
     EXPECT_EQ(r.harmful_faces, (std::vector<Index>{0, 1}));
 }
 
+TEST(HarmCheck, APieceNearerTheOtherSideOfAThinWallThanItsOwnFaceIsHarm) {
+    // A face of another sheet beyond the strip's rings (the other side of a thin wall), facing
+    // away from the strip's pieces, 0.06 from the ideal point, which lies farther from the
+    // strip's own faces: nearest there, it turns against the pieces, as the do-no-harm
+    // criterion counts anywhere in the input. Without it the same split does no harm.
+    test::Strip s = test::make_strip();
+    const Vec3 point(0, 0, 0.75);
+    const Vec3 away = Vec3(1, 1, 0).normalized(), along = Vec3(1, -1, 0).normalized();
+    const Vec3 centre = point + 0.06 * away;
+    s.mesh.positions.push_back(centre + 0.2 * along);
+    s.mesh.positions.push_back(centre - 0.2 * along + 0.2 * Vec3::UnitZ());
+    s.mesh.positions.push_back(centre - 0.2 * along - 0.2 * Vec3::UnitZ());
+    s.mesh.triangles.push_back({4, 5, 6});
+    s.rebuild();
+    ASSERT_LT(s.normals.face[2].dot(away), -0.99);  // faces away from the pieces
+    const auto distance_to = [&](Index f) {
+        const Triangle& t = s.mesh.triangles[f];
+        return squared_distance_to_triangle(point, s.mesh.positions[t[0]], s.mesh.positions[t[1]],
+                                            s.mesh.positions[t[2]]);
+    };
+    ASSERT_LT(distance_to(2), std::min(distance_to(0), distance_to(1)));
+    const HarmReport r = check_harm(s.surface(), split_at(s, point));
+    EXPECT_GE(r.turned, 1u);
+    EXPECT_EQ(r.harmful_faces, (std::vector<Index>{0, 1}));
+}
+
 TEST(HarmCheck, PiecesFoldedOntoEachOtherAreHarm) {
     // In face 0's plane but beyond its edge a0-b0: piece (a0, M, b0) folds back onto
     // (a0, a1, M), 180 degrees, where the input face was flat.
