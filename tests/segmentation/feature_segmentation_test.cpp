@@ -165,8 +165,8 @@ Mesh rounded_edge(std::vector<double>& slope) {
 
 // Growth under the growing angle (8 degrees) creeps over a rounding whose rows turn by less,
 // and takes both faces into one region; held to its seed's normal from its first face on,
-// within 1.5 growing angles (held_to_seed(), restore()'s near-surface settings), no region
-// takes faces of both.
+// within 1.5 growing angles (near_surface_settings(), restore()'s on near-surface meshes), no
+// region takes faces of both.
 TEST(FeatureSegmentation, RegionsHeldToTheirSeedStopAtARoundedEdge) {
     std::vector<double> slope;
     const Mesh mesh = rounded_edge(slope);
@@ -181,13 +181,33 @@ TEST(FeatureSegmentation, RegionsHeldToTheirSeedStopAtARoundedEdge) {
     };
     const GrownRegions unlimited = grow_feature_regions(mesh, c, fn, {.curved_region_faces = 0});
     EXPECT_EQ(unlimited.count, 1u);
-    const GrownRegions held = grow_feature_regions(mesh, c, fn, held_to_seed({}));
+    const GrownRegions held = grow_feature_regions(mesh, c, fn, near_surface_settings({}));
     const std::set<Index> flat = regions_of(0.0, held), steep = regions_of(45.0, held);
     EXPECT_EQ(flat.size(), 1u);
     EXPECT_EQ(steep.size(), 1u);
     EXPECT_NE(*flat.begin(), *steep.begin());
     EXPECT_THROW(grow_feature_regions(mesh, c, fn, {.curved_seed_reach = 0.5}), InvalidInput);
     EXPECT_THROW(grow_feature_regions(mesh, c, fn, {.curved_seed_reach = 30.0}), InvalidInput);
+}
+
+// A one-triangle-wide strip is a band when the share of its vertices labelled edge vertices
+// reaches band_edge_fraction: on the box with two vertices in five labelled, its strips are
+// bands at a third (near_surface_settings()) and fewer of them at a half.
+TEST(FeatureSegmentation, AStripIsABandFromTheShareOfEdgeVerticesAsked) {
+    const test::SampledShape shape = test::sampled_box();
+    const Connectivity c = build_connectivity(shape.mesh);
+    const auto fn = face_normals(shape.mesh);
+    std::vector<std::uint8_t> two_in_five(shape.mesh.vertex_count());
+    for (Index v = 0; v < two_in_five.size(); ++v) two_in_five[v] = v % 5 < 2;
+    const FeatureSegmentationOptions third{.band_edge_fraction =
+                                               near_surface_settings({}).band_edge_fraction};
+    EXPECT_DOUBLE_EQ(third.band_edge_fraction, 1.0 / 3.0);
+    const FeatureSegmentation at_third = segment_features(shape.mesh, c, fn, two_in_five, third);
+    const FeatureSegmentation at_half = segment_features(shape.mesh, c, fn, two_in_five, {});
+    EXPECT_GE(at_third.band_patches, 12u);
+    EXPECT_LT(at_half.band_patches, at_third.band_patches);
+    EXPECT_THROW(segment_features(shape.mesh, c, fn, two_in_five, {.band_edge_fraction = 1.5}),
+                 InvalidInput);
 }
 
 /// A block [0.37, 10.21] x [0.29, 8.13] x [0.41, 6.2929] (faces 0..5 as in sampled_box()) with

@@ -597,14 +597,14 @@ private:
 
     /// Adapts the options to a mesh whose vertices lie as `choice` says: a flat strip of facets,
     /// or a few faces around a vertex, tell a smooth surface's turn only where the vertices lie
-    /// on the surface (FeatureNormalOptions::vertices_on_surface). Near: regions grow held to
-    /// their seeds (held_to_seed()).
+    /// on the surface (FeatureNormalOptions::vertices_on_surface). Near: the feature
+    /// segmentation's near-surface settings (near_surface_settings()).
     void adopt(const PlacementChoice& choice) {
         if (choice.placement != VertexPlacement::Exact) {
             options_.normals.vertices_on_surface = false;
         }
         if (choice.placement == VertexPlacement::Near) {
-            options_.features = held_to_seed(options_.features);
+            options_.features = near_surface_settings(options_.features);
         }
     }
 

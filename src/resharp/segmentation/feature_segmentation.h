@@ -21,9 +21,12 @@ struct FeatureSegmentationOptions {
     /// §4: patches with fewer faces than this are tiny and absorbed by a neighbour.
     std::size_t tiny_patch_faces = 25;
     /// A patch is a chamfer band (an edge region, not a feature) when fewer than this share of
-    /// its vertices are interior to it and at least half are edge vertices: a band is one
-    /// triangle wide, a real face of two grid cells or more has a row of interior vertices.
+    /// its vertices are interior to it and at least band_edge_fraction are edge vertices: a band
+    /// is one triangle wide, a real face of two grid cells or more has a row of interior
+    /// vertices.
     double band_interior_fraction = 0.1;
+    /// See band_interior_fraction: a half on exact meshes; near_surface_settings() asks a third.
+    double band_edge_fraction = 0.5;
     /// Greedy merging, §4 and Fig. 5: two touching patches whose normals, compared at the
     /// vertices they share, differ by less than this (degrees, median over the border) are one
     /// surface that region growing split.
@@ -37,7 +40,7 @@ struct FeatureSegmentationOptions {
     /// paper).
     std::size_t curved_region_faces = 300;
     /// How far from its seed's normal such a limited region still takes faces, in growing
-    /// angles (eps_theta): 1 on exact meshes; held_to_seed() gives near-surface meshes more.
+    /// angles (eps_theta): 1 on exact meshes; near_surface_settings() gives more.
     double curved_seed_reach = 1.0;
     /// Greedy merging (our addition): two patches are never joined, directly or through a chain
     /// of smooth borders, when a patch of one meets a patch of the other at a border of merge
@@ -97,11 +100,13 @@ GrownRegions grow_feature_regions(const Mesh& mesh, const Connectivity& connecti
                                   const std::vector<Vec3>& face_normals,
                                   const FeatureSegmentationOptions& options = {});
 
-/// Takes `options`; gives them as restore() grows the regions of a near-surface mesh with: every
-/// region held to its seed's normal from its first face on, within 1.5 growing angles
+/// Takes `options`; gives them as restore() segments a near-surface mesh with: every region
+/// held to its seed's normal from its first face on, within 1.5 growing angles
 /// (curved_region_faces 1, curved_seed_reach 1.5), so that growth does not creep over the rows
-/// by which a dual mesher rounds a sharp edge. Growth without limit (0, the paper) stays so.
-FeatureSegmentationOptions held_to_seed(FeatureSegmentationOptions options);
+/// by which a dual mesher rounds a sharp edge, and a one-triangle-wide strip a band when a third
+/// of its vertices are edge vertices (band_edge_fraction). Growth without limit (0, the paper)
+/// keeps the paper's settings.
+FeatureSegmentationOptions near_surface_settings(FeatureSegmentationOptions options);
 
 /// Takes the mesh, its connectivity, unit face normals (#F), the regions grow_feature_regions()
 /// gave for them with the same options, and the edge-vertex labels of segment_edges (#V);
