@@ -45,9 +45,9 @@ constexpr double kNearSeedReach = 1.5;
 /// Near: the share of a one-triangle-wide strip's vertices that must be edge vertices for it to
 /// be a band (band_edge_fraction; a half on exact meshes). Strips of a dual mesher's bands fell
 /// short of a half and were kept as features, their edges lost: a third lifted OpenVDB's mean
-/// Edge F-score on the CAD corpus and the benchmark parts 0.830 -> 0.839 (stepped_block aligned
+/// Edge F-score on the CAD corpus and the benchmark parts 0.830 -> 0.838 (stepped_block aligned
 /// 0.897 -> 0.939, spool 0.830 -> 0.885; sphere_part 0.852 -> 0.841) and surface nets' 0.906 ->
-/// 0.910 (docs/method.md, *Bands of a third of edge vertices*). Until the harm check weighed
+/// 0.909 (docs/method.md, *Bands of a third of edge vertices*). Until the harm check weighed
 /// the faces beyond its rings, a round pocket's floor circle next to a thin wall then came out
 /// with faces turned against the input.
 constexpr double kNearBandEdgeFraction = 1.0 / 3.0;
