@@ -74,8 +74,8 @@ struct MovedVertices {
 /// faces within two rings of a changed face are judged: a face's verdict depends on nothing but
 /// its own pieces, those of the faces within two rings of it and the input faces (the same in
 /// every round), so elsewhere it stands (no harm). The counts then cover the judged faces alone.
-/// Empty: every split face is judged. \throws InvalidInput if the fold angle is not in (90, 180],
-/// `changed` is neither empty nor
+/// Empty: every split face is judged.
+/// \throws InvalidInput if the fold angle is not in (90, 180], `changed` is neither empty nor
 ///         one flag per input face, or `moves` neither empty nor one flag and one input place
 ///         per input vertex.
 HarmReport check_harm(const InputSurface& input, const SplitMesh& output,
