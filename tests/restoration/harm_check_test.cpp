@@ -38,7 +38,8 @@ TEST(HarmCheck, APieceNearerTheOtherSideOfAThinWallThanItsOwnFaceIsHarm) {
     // A face of another sheet beyond the strip's rings (the other side of a thin wall), facing
     // away from the strip's pieces, 0.06 from the ideal point, which lies farther from the
     // strip's own faces: nearest there, it turns against the pieces, as the do-no-harm
-    // criterion counts anywhere in the input. Without it the same split does no harm.
+    // criterion counts anywhere in the input, with HarmCheckOptions::beyond_rings; the rings
+    // alone do not see it.
     test::Strip s = test::make_strip();
     const Vec3 point(0, 0, 0.75);
     const Vec3 away = Vec3(1, 1, 0).normalized(), along = Vec3(1, -1, 0).normalized();
@@ -55,9 +56,11 @@ TEST(HarmCheck, APieceNearerTheOtherSideOfAThinWallThanItsOwnFaceIsHarm) {
                                             s.mesh.positions[t[2]]);
     };
     ASSERT_LT(distance_to(2), std::min(distance_to(0), distance_to(1)));
-    const HarmReport r = check_harm(s.surface(), split_at(s, point));
+    const SplitMesh split = split_at(s, point);
+    const HarmReport r = check_harm(s.surface(), split, {.beyond_rings = true});
     EXPECT_GE(r.turned, 1u);
     EXPECT_EQ(r.harmful_faces, (std::vector<Index>{0, 1}));
+    EXPECT_TRUE(check_harm(s.surface(), split).is_harmless());  // the two rings alone
 }
 
 TEST(HarmCheck, PiecesFoldedOntoEachOtherAreHarm) {

@@ -598,13 +598,15 @@ private:
     /// Adapts the options to a mesh whose vertices lie as `choice` says: a flat strip of facets,
     /// or a few faces around a vertex, tell a smooth surface's turn only where the vertices lie
     /// on the surface (FeatureNormalOptions::vertices_on_surface). Near: the feature
-    /// segmentation's near-surface settings (near_surface_settings()).
+    /// segmentation's near-surface settings (near_surface_settings()), and the harm check's
+    /// turned test over the faces beyond the rings (HarmCheckOptions::beyond_rings).
     void adopt(const PlacementChoice& choice) {
         if (choice.placement != VertexPlacement::Exact) {
             options_.normals.vertices_on_surface = false;
         }
         if (choice.placement == VertexPlacement::Near) {
             options_.features = near_surface_settings(options_.features);
+            options_.harm.beyond_rings = true;
         }
     }
 

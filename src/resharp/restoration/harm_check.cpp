@@ -242,7 +242,8 @@ public:
         if (!moved_.empty()) make_unmoved_normals();
         choose_judged(changed);
         describe_pieces();
-        find_far_candidates();
+        far_first_.assign(split_.size() + 1, 0);
+        if (options.beyond_rings) find_far_candidates();
         if (check_crossings_) find_simple_fans();
     }
 
@@ -520,7 +521,6 @@ private:
     /// of them. Found in one pass over the input's faces against a grid of the reach boxes;
     /// faces within the rings may come again (judge() takes each once).
     void find_far_candidates() {
-        far_first_.assign(split_.size() + 1, 0);
         if (judged_list_.empty()) return;
         std::vector<Box3> reach(judged_list_.size());
         tbb::parallel_for(std::size_t{0}, judged_list_.size(),

@@ -20,11 +20,19 @@ struct HarmCheckOptions {
     /// Test every piece against the faces near it for crossings (the most costly of the three
     /// checks).
     bool check_crossings = true;
+    /// The turned check (a) also weighs the input faces beyond the two rings that may come as
+    /// near a piece as its own face (the other side of a thin wall), as the tests and the
+    /// evaluation do: one pass over the input's faces per round. restore() asks it on
+    /// near-surface meshes, where a strip of a third of edge vertices is a band and new points
+    /// came nearer a thin wall's other side; on exact meshes it changed no output of the corpus
+    /// and cost up to a fifth of restore() (impeller's harm check 20 -> 42 ms).
+    bool beyond_rings = false;
 };
 
 struct HarmReport {
     /// Pieces turned more than 90 degrees against every input face nearest their centroid or
-    /// one of their vertices (searched over the whole input), or of no area.
+    /// one of their vertices (searched within two rings of their source face, or with
+    /// HarmCheckOptions::beyond_rings over the whole input), or of no area.
     std::size_t turned = 0;
     std::size_t folded = 0;    ///< pieces folded onto an adjacent output face
     std::size_t crossing = 0;  ///< pieces meeting, or coming within rounding of, a nearby face
@@ -65,9 +73,9 @@ struct MovedVertices {
 ///   more than the tolerance (the separating axes the test itself would reach last).
 /// On the benchmark parts this changes no verdict.
 ///
-/// The turned check (a) weighs the input faces within two rings and, found by one pass over the
-/// input's faces, those beyond that turn against a piece and may come as near it as its own face
-/// (the other side of a thin wall).
+/// The turned check (a) weighs the input faces within two rings and, with
+/// HarmCheckOptions::beyond_rings, found by one pass over the input's faces, those beyond that
+/// turn against a piece and may come as near it as its own face (the other side of a thin wall).
 ///
 /// A later round may pass `changed` (#F): the input faces whose pieces differ from those of an
 /// earlier split this check judged, every face it found harmful among them. Then only the split
