@@ -633,11 +633,7 @@ private:
     /// The boxes of scratch.faces, made the first time a piece of the face needs them.
     void ensure_boxes(Scratch& scratch) const {
         if (!scratch.boxes.empty()) return;
-        const auto& x = input_positions_;
-        for (Index g : scratch.faces) {
-            const Triangle& t = input_.mesh.triangles[g];
-            scratch.boxes.push_back(Box3(x[t[0]]).extend(x[t[1]]).extend(x[t[2]]));
-        }
+        for (Index g : scratch.faces) scratch.boxes.push_back(input_face_box(g));
     }
 
     /// Per piece of split face number i: whether it turns against one of the candidates (or
