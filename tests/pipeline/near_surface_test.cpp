@@ -439,6 +439,31 @@ TEST(NearSurface, MovesTheHarmCheckRefusesAreGivenUpWithinTheHarmRounds) {
     test::expect_no_harm(input, r, options);
 }
 
+// A knife edge of 20 degrees (a block cut by two planes through a line at x = 30, y = 10),
+// turned off the grid axes and meshed at grid-edge midpoints at 60 cells: near its tip the
+// blade is thinner than the moves, and a moved face there lay nearer the other side's input
+// faces than its own, turned against them. The harm check weighs the faces beyond the two rings
+// on midpoint meshes too: with the rings alone 3 such faces were left (as measured when this
+// test was written).
+TEST(NearSurface, AMidpointBladesFacesAreJudgedAgainstItsOtherSide) {
+    const sim::CsgSolid solid(sim::parse_csg(R"({"solid": {"intersection": [
+          {"box": {"min": [0, 0, 0], "max": [40, 20, 20]}},
+          {"halfspace": {"point": [30, 10, 0], "normal": [0.17364817766693033, 0.984807753012208, 0]}},
+          {"halfspace": {"point": [30, 10, 0], "normal": [0.17364817766693033, -0.984807753012208, 0]}}
+        ], "rotate": {"axis": [2, -1, 3], "degrees": 27}}})",
+                                             "turned blade"));
+    const sim::DexelGrid grid = sim::sample_solid(
+        sim::phased_grid(solid.bounds(), sim::pitch_for_cells(solid.bounds(), 60), 0.4142), solid);
+    sim::MeshingOptions meshing;
+    meshing.mesher = sim::Mesher::Midpoint;
+    const Mesh input = sim::mesh_dexels(grid, meshing).mesh;
+    const RestoreOptions options;
+    const RestoreResult r = restore(input, options);
+    ASSERT_EQ(r.report.vertex_placement, "midpoint");
+    EXPECT_GT(r.report.moved_vertices, 0u);
+    test::expect_no_harm(input, r, options);
+}
+
 // A flat strip of facets tells how a small cylinder turns only where the vertices lie on the
 // surface: on a surface-nets mesh the border of a wide chamfer is such a strip too
 // (FeatureNormalOptions::vertices_on_surface), and its edge would pass for smooth.

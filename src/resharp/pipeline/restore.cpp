@@ -597,16 +597,17 @@ private:
 
     /// Adapts the options to a mesh whose vertices lie as `choice` says: a flat strip of facets,
     /// or a few faces around a vertex, tell a smooth surface's turn only where the vertices lie
-    /// on the surface (FeatureNormalOptions::vertices_on_surface). Near: the feature
-    /// segmentation's near-surface settings (near_surface_settings()), and the harm check's
-    /// turned test over the faces beyond the rings (HarmCheckOptions::beyond_rings).
+    /// on the surface (FeatureNormalOptions::vertices_on_surface), and moved faces may come
+    /// nearer a thin blade's other side than their own face, which the harm check's turned test
+    /// then weighs (HarmCheckOptions::beyond_rings). Near: also the feature segmentation's
+    /// near-surface settings (near_surface_settings()).
     void adopt(const PlacementChoice& choice) {
         if (choice.placement != VertexPlacement::Exact) {
             options_.normals.vertices_on_surface = false;
+            options_.harm.beyond_rings = true;
         }
         if (choice.placement == VertexPlacement::Near) {
             options_.features = near_surface_settings(options_.features);
-            options_.harm.beyond_rings = true;
         }
     }
 

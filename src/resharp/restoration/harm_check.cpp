@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <numeric>
 #include <optional>
 #include <string>
 #include <utility>
@@ -518,65 +519,82 @@ private:
     /// (reach_box_of()) and share no vertex with it, where one of them turns against one of its
     /// pieces. Where none does, they could only show a piece not turned that the rings alone
     /// call turned: leaving them out then refuses more, never less, and spares the judging most
-    /// of them. Found in one pass over the input's faces against a grid of the reach boxes;
-    /// faces within the rings may come again (judge() takes each once).
+    /// of them. Found in passes over the input's faces: the faces that turn against a piece,
+    /// for kReachBoxesPerPass judged faces a pass, then all of them for the few judged faces
+    /// that have one; faces within the rings may come again (judge() takes each once).
     void find_far_candidates() {
-        if (judged_list_.empty()) return;
-        std::vector<Box3> reach(judged_list_.size());
-        tbb::parallel_for(std::size_t{0}, judged_list_.size(),
-                          [&](std::size_t k) { reach[k] = reach_box_of(judged_list_[k]); });
+        std::vector<std::uint8_t> has_turned(split_.size(), 0);
+        for (std::size_t first = 0; first < judged_list_.size(); first += kReachBoxesPerPass) {
+            std::vector<Index> some(std::min(kReachBoxesPerPass, judged_list_.size() - first));
+            std::iota(some.begin(), some.end(), static_cast<Index>(first));
+            for (const FarPair& p : far_pairs(some, true)) has_turned[p.first] = 1;
+        }
+        std::vector<Index> beside;  // the judged faces with a face turned against them
+        for (std::size_t k = 0; k < judged_list_.size(); ++k) {
+            if (has_turned[judged_list_[k]]) beside.push_back(static_cast<Index>(k));
+        }
+        std::vector<FarPair> pairs = far_pairs(beside, false);
+        std::sort(pairs.begin(), pairs.end());
+        pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+        for (const FarPair& p : pairs) ++far_first_[p.first + 1];
+        for (std::size_t i = 1; i < far_first_.size(); ++i) far_first_[i] += far_first_[i - 1];
+        far_.reserve(pairs.size());
+        for (const FarPair& p : pairs) far_.push_back(p.second);
+    }
+
+    /// Judged faces whose reach boxes one pass of find_far_candidates() keeps: the boxes and
+    /// their grid take a few MB whatever the mesh. A midpoint mesh has every face judged, and
+    /// its restoration peaks in this check: all of mech's at once, in doubles, took its peak
+    /// from 265 to 353 bytes per input triangle (the budget is 300), in floats to 319.
+    static constexpr std::size_t kReachBoxesPerPass = std::size_t{1} << 17;
+
+    /// (split face number, input face)
+    using FarPair = std::pair<Index, Index>;
+
+    /// The pairs (judged_list_[k], g) for k in `judged`, g an input face whose box meets the
+    /// judged face's reach box and that shares no vertex with it; with `turned_only`, only
+    /// those where g turns against one of its pieces. One pass over the input's faces against a
+    /// grid of those reach boxes.
+    std::vector<FarPair> far_pairs(const std::vector<Index>& judged, bool turned_only) const {
+        if (judged.empty()) return {};
+        std::vector<OuterBox> reach(judged.size());  // floats: half the memory
+        tbb::parallel_for(std::size_t{0}, judged.size(), [&](std::size_t j) {
+            reach[j] = OuterBox(reach_box_of(judged_list_[judged[j]]));
+        });
         Box3 all;
         double size = 0.0;
-        for (std::size_t k = 0; k < reach.size(); ++k) {
-            all.extend(reach[k]);
-            size += input_face_box(split_.face(judged_list_[k])).sizes().maxCoeff();
+        for (std::size_t j = 0; j < judged.size(); ++j) {
+            all.extend(reach[j].box());
+            size += input_face_box(split_.face(judged_list_[judged[j]])).sizes().maxCoeff();
         }
         // Cells of twice the judged faces' mean size, at most eight per judged face: a face's
         // box meets a few, each holding a few reach boxes, and no cell array spans the part's
         // volume at the scale of its faces (fresh pages cost more than the queries).
-        const double mean_cell = 2.0 * size / double(reach.size());
+        const double mean_cell = 2.0 * size / double(judged.size());
         const detail::UniformGrid grid(
-            reach.size(), [&](std::size_t k) { return reach[k]; },
-            mean_cell > 0.0 ? mean_cell : 1.0, 8 * reach.size());
-        // (split face number, input face): faces beyond the face that turn against one of its
-        // pieces, and the others, which count only beside one that does.
-        using Pair = std::pair<Index, Index>;
-        struct Found {
-            std::vector<Pair> turned, others;
-        };
-        tbb::enumerable_thread_specific<Found> found;
+            judged.size(), [&](std::size_t j) { return reach[j].box(); },
+            mean_cell > 0.0 ? mean_cell : 1.0, 8 * judged.size());
+        tbb::enumerable_thread_specific<std::vector<FarPair>> found;
         using Range = tbb::blocked_range<Index>;
         tbb::parallel_for(Range(0, static_cast<Index>(input_.mesh.face_count())),
                           [&](const Range& range) {
-                              Found& mine = found.local();
+                              std::vector<FarPair>& mine = found.local();
                               for (Index g = range.begin(); g != range.end(); ++g) {
                                   const Box3 box = input_face_box(g);
                                   if (!box.intersects(all)) continue;
-                                  grid.for_each_meeting(box, [&](Index k) {
-                                      const Index i = judged_list_[k];
-                                      if (!reach[k].intersects(box) || touches_face(i, g)) return;
-                                      (turns_against_a_piece(i, g) ? mine.turned : mine.others)
-                                          .emplace_back(i, g);
+                                  grid.for_each_meeting(box, [&](Index j) {
+                                      const Index i = judged_list_[judged[j]];
+                                      if (!reach[j].may_meet(box) || touches_face(i, g)) return;
+                                      if (!turned_only || turns_against_a_piece(i, g))
+                                          mine.emplace_back(i, g);
                                   });
                               }
                           });
-        std::vector<std::uint8_t> has_turned(split_.size(), 0);
-        for (const Found& mine : found) {
-            for (const Pair& p : mine.turned) has_turned[p.first] = 1;
+        std::vector<FarPair> pairs;
+        for (const std::vector<FarPair>& mine : found) {
+            pairs.insert(pairs.end(), mine.begin(), mine.end());
         }
-        std::vector<Pair> pairs;
-        for (const Found& mine : found) {
-            pairs.insert(pairs.end(), mine.turned.begin(), mine.turned.end());
-            for (const Pair& p : mine.others) {
-                if (has_turned[p.first]) pairs.push_back(p);
-            }
-        }
-        std::sort(pairs.begin(), pairs.end());
-        pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-        for (const Pair& p : pairs) ++far_first_[p.first + 1];
-        for (std::size_t i = 1; i < far_first_.size(); ++i) far_first_[i] += far_first_[i - 1];
-        far_.reserve(pairs.size());
-        for (const Pair& p : pairs) far_.push_back(p.second);
+        return pairs;
     }
 
     /// Whether input face g shares a vertex with split face i's input face.

@@ -25,6 +25,11 @@ public:
         }
     }
 
+    /// The box of doubles that holds the floats' bounds (and so the box it was made from).
+    Box3 box() const {
+        return Box3(Vec3(min_[0], min_[1], min_[2]), Vec3(max_[0], max_[1], max_[2]));
+    }
+
     bool may_meet(const Box3& box) const {
         for (int k = 0; k < 3; ++k) {
             if (max_[k] < box.min()[k] || box.max()[k] < min_[k]) return false;
