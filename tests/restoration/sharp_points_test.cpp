@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "resharp/restoration/pieces.h"
 #include "strip.h"
@@ -132,6 +133,28 @@ TEST(SharpPoints, APointBeyondTheChordGoesInsideTheFaceThatHoldsIt) {
     PointSlots expected(2);
     expected.set_corner_point(0, 0);
     EXPECT_TRUE(ours.slots == expected);
+}
+
+// The spike test on crossing edges: the strip's ends turned 140 degrees apart (the side face's
+// normal tilted back over the top) are refused past an edge spike angle of 135, placed at 180 (the
+// default); the strip's own right angle passes at 135.
+TEST(SharpPoints, TheEdgeSpikeTestRefusesABladeNarrowerThanItsAngle) {
+    const test::Strip right = test::make_strip();
+    const SharpPointOptions spike{.edge_spike_angle_deg = 135.0};
+    const SharpPoints kept = test::points_on_edge_a1_b0(right, spike);
+    EXPECT_EQ(kept.edge_points, 1u);
+    EXPECT_EQ(kept.refused_by_spike_test, 0u);
+
+    test::Strip blade = test::make_strip();
+    const double t = 140.0 * std::numbers::pi / 180.0;
+    const Vec3 tilted(std::sin(t), std::cos(t), 0.0);  // 140 degrees from the top's (0, 1, 0)
+    blade.set_feature_normals({{0, 1, 0}, {0, 1, 0}, tilted, tilted});
+    const SharpPoints refused = test::points_on_edge_a1_b0(blade, spike);
+    EXPECT_EQ(refused.edge_points, 0u);
+    EXPECT_EQ(refused.refused_by_spike_test, 1u);
+    const SharpPoints paper = test::points_on_edge_a1_b0(blade);
+    EXPECT_EQ(paper.refused_by_spike_test, 0u);
+    EXPECT_EQ(paper.edge_points + paper.refused_by_flip_test, 1u);  // judged by eq. 5.4 alone
 }
 
 /// The strip past the edge with a0 moved so that neither face of a1-b0 holds its point.

@@ -599,12 +599,14 @@ private:
     /// or a few faces around a vertex, tell a smooth surface's turn only where the vertices lie
     /// on the surface (FeatureNormalOptions::vertices_on_surface), and moved faces may come
     /// nearer a thin blade's other side than their own face, which the harm check's turned test
-    /// then weighs (HarmCheckOptions::beyond_rings). Near: also the feature segmentation's
-    /// near-surface settings (near_surface_settings()).
+    /// then weighs (HarmCheckOptions::beyond_rings); a blade thinner than a cell has its
+    /// vertices on either face, and no point goes on its tip (kNearEdgeSpikeAngleDeg). Near: also
+    /// the feature segmentation's near-surface settings (near_surface_settings()).
     void adopt(const PlacementChoice& choice) {
         if (choice.placement != VertexPlacement::Exact) {
             options_.normals.vertices_on_surface = false;
             options_.harm.beyond_rings = true;
+            options_.points.edge_spike_angle_deg = kNearEdgeSpikeAngleDeg;
         }
         if (choice.placement == VertexPlacement::Near) {
             options_.features = near_surface_settings(options_.features);

@@ -216,6 +216,7 @@ enum class EdgeFate : std::uint8_t {
     None,           ///< not a crossing edge, or its twin places it
     MissingNormal,  ///< an end has no feature normal
     Refused,        ///< by the flip test (eq. 5.4)
+    Spike,          ///< by the spike test (SharpPointOptions::edge_spike_angle_deg)
     OnEdge,         ///< a point on the edge
     Beyond,         ///< second order: a point beyond the chord, for a face to hold
 };
@@ -227,12 +228,13 @@ struct EdgePlacement {
 };
 
 /// The point of the crossing edge of half-edge h, if h runs from its end first in sweep order
-/// (so each edge is placed once, in the same direction whatever the corners' order) and both
-/// ends have feature normals: on the edge where eq. 5.4 holds; with second-order placement,
-/// where it fails, beyond the chord. Reads nothing another edge's placement writes.
+/// (so each edge is placed once, in the same direction whatever the corners' order), both
+/// ends have feature normals no more than `spike_angle_deg` apart (the spike test): on the edge
+/// where eq. 5.4 holds; with second-order placement, where it fails, beyond the chord. Reads
+/// nothing another edge's placement writes.
 EdgePlacement edge_placement(const Mesh& mesh, const Connectivity& c,
                              const BandClassification& bands, const FeatureNormals& normals,
-                             const SideSurfaces& sides, Index h) {
+                             const SideSurfaces& sides, double spike_angle_deg, Index h) {
     EdgePlacement out;
     if (!bands.is_crossing[h] || c.twin[h] == kNoIndex) return out;
     const Index u = tail_vertex(mesh, h);
@@ -242,6 +244,10 @@ EdgePlacement edge_placement(const Mesh& mesh, const Connectivity& c,
     const Vec3& b = mesh.positions[v];
     if (normals.normal(u).isZero(0.0) || normals.normal(v).isZero(0.0)) {
         out.fate = EdgeFate::MissingNormal;
+        return out;
+    }
+    if (angle_deg(normals.normal(u), normals.normal(v)) > spike_angle_deg) {
+        out.fate = EdgeFate::Spike;
         return out;
     }
     const std::optional<Vec3> m = edge_point(a, normals.normal(u), b, normals.normal(v));
@@ -268,6 +274,9 @@ void take_edge_placement(const Connectivity& c, Index h, const EdgePlacement& pl
             return;
         case EdgeFate::Refused:
             ++out.refused_by_flip_test;
+            return;
+        case EdgeFate::Spike:
+            ++out.refused_by_spike_test;
             return;
         case EdgeFate::Beyond:
             beyond.push_back({h, placed.x});
@@ -310,7 +319,8 @@ void place_points_beyond_chords(const Mesh& mesh, const Connectivity& c,
 /// §5.2: the points of every crossing edge; only faces with a crossing edge are looked at. Points
 /// on their edges first, in face order, then those inside faces.
 void place_edge_points(const Mesh& mesh, const Connectivity& c, const BandClassification& bands,
-                       const FeatureNormals& normals, const SideSurfaces& sides, SharpPoints& out) {
+                       const FeatureNormals& normals, const SideSurfaces& sides,
+                       double spike_angle_deg, SharpPoints& out) {
     std::vector<Index> halfedges;  // of the faces with a crossing edge (few), in face order
     for (Index f = 0; f < bands.face_role.size(); ++f) {
         if (bands.face_role[f] == BandRole::None) continue;
@@ -319,7 +329,7 @@ void place_edge_points(const Mesh& mesh, const Connectivity& c, const BandClassi
     // The edges are solved in parallel, then numbered in face order on one thread.
     std::vector<EdgePlacement> placed(halfedges.size());
     for_each_index(halfedges.size(), 64, [&](std::size_t i) {
-        placed[i] = edge_placement(mesh, c, bands, normals, sides, halfedges[i]);
+        placed[i] = edge_placement(mesh, c, bands, normals, sides, spike_angle_deg, halfedges[i]);
     });
     std::vector<PointBeyondChord> beyond;
     for (std::size_t i = 0; i < halfedges.size(); ++i)
@@ -436,10 +446,14 @@ SharpPoints place_sharp_points(const Mesh& mesh, const Connectivity& connectivit
     if (!(options.spike_angle_deg > 0.0 && options.spike_angle_deg <= 180.0)) {
         throw InvalidInput("spike angle must lie in (0, 180] degrees");
     }
+    if (!(options.edge_spike_angle_deg > 0.0 && options.edge_spike_angle_deg <= 180.0)) {
+        throw InvalidInput("edge spike angle must lie in (0, 180] degrees");
+    }
     SharpPoints out;
     out.slots = PointSlots(mesh.face_count());
     const SideSurfaces sides(mesh, feature_normals, options.placement);
-    place_edge_points(mesh, connectivity, bands, feature_normals, sides, out);
+    place_edge_points(mesh, connectivity, bands, feature_normals, sides,
+                      options.edge_spike_angle_deg, out);
     place_corner_points(mesh, connectivity, face_normals, bands, feature_normals, sides,
                         options.spike_angle_deg, out);
     RESHARP_EXPENSIVE_ASSERT(slots_follow_bands(connectivity, bands, out));
