@@ -63,8 +63,10 @@ struct RestoreReport {
     /// of the edge points, those inside a face of their crossing edge (beyond its chord)
     std::size_t face_points_inserted = 0;
     std::size_t corner_points_inserted = 0;
-    std::size_t refused_by_flip_test = 0;    ///< eq. 5.4
-    std::size_t refused_by_spike_test = 0;   ///< §5.3
+    std::size_t refused_by_flip_test = 0;  ///< eq. 5.4
+    /// §5.3: corner triangles, and on near-surface and midpoint meshes crossing edges
+    /// (SharpPointOptions::edge_spike_angle_deg)
+    std::size_t refused_by_spike_test = 0;
     std::size_t first_order_points = 0;      ///< second-order placement fell back to eq. 5.2/5.3
     std::size_t refused_missing_normal = 0;  ///< a vertex with no face on its own feature
     std::size_t refused_by_quality = 0;      ///< the guard: a split piece would flip or collapse

@@ -246,7 +246,9 @@ EdgePlacement edge_placement(const Mesh& mesh, const Connectivity& c,
         out.fate = EdgeFate::MissingNormal;
         return out;
     }
-    if (angle_deg(normals.normal(u), normals.normal(v)) > spike_angle_deg) {
+    // At 180 (exact meshes) no angle exceeds it, and none is measured.
+    if (spike_angle_deg < 180.0 &&
+        angle_deg(normals.normal(u), normals.normal(v)) > spike_angle_deg) {
         out.fate = EdgeFate::Spike;
         return out;
     }
