@@ -22,11 +22,11 @@ struct HarmCheckOptions {
     bool check_crossings = true;
     /// The turned check (a) also weighs the input faces beyond the two rings that may come as
     /// near a piece as its own face (the other side of a thin wall), as the tests and the
-    /// evaluation do: a pass over the input's faces per round (more where over 131,072 faces
-    /// are judged). restore() asks it on near-surface and midpoint meshes, whose moves and
-    /// points came nearer a thin wall's or blade's other side; on exact meshes it changed no
-    /// output of the corpus and cost up to a fifth of restore() (impeller's harm check 20 -> 42
-    /// ms).
+    /// evaluation do: per round, a pass over the input's faces for every 131,072 judged faces,
+    /// and one more where a face beyond the rings turns against a piece. restore() asks it on
+    /// near-surface and midpoint meshes, whose moves and points came nearer a thin wall's or
+    /// blade's other side; on exact meshes it changed no output of the corpus and cost up to a
+    /// fifth of restore() (impeller's harm check 20 -> 42 ms).
     bool beyond_rings = false;
 };
 
