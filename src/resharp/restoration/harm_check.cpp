@@ -10,8 +10,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <numeric>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -524,14 +524,16 @@ private:
     /// that have one; faces within the rings may come again (judge() takes each once).
     void find_far_candidates() {
         std::vector<std::uint8_t> has_turned(split_.size(), 0);
-        for (std::size_t first = 0; first < judged_list_.size(); first += kReachBoxesPerPass) {
-            std::vector<Index> some(std::min(kReachBoxesPerPass, judged_list_.size() - first));
-            std::iota(some.begin(), some.end(), static_cast<Index>(first));
-            for (const FarPair& p : far_pairs(some, true)) has_turned[p.first] = 1;
+        const std::span<const Index> judged(judged_list_);
+        for (std::size_t first = 0; first < judged.size(); first += kReachBoxesPerPass) {
+            const std::size_t count = std::min(kReachBoxesPerPass, judged.size() - first);
+            for (const FarPair& p : far_pairs(judged.subspan(first, count), true)) {
+                has_turned[p.first] = 1;
+            }
         }
         std::vector<Index> beside;  // the judged faces with a face turned against them
-        for (std::size_t k = 0; k < judged_list_.size(); ++k) {
-            if (has_turned[judged_list_[k]]) beside.push_back(static_cast<Index>(k));
+        for (Index i : judged_list_) {
+            if (has_turned[i]) beside.push_back(i);
         }
         std::vector<FarPair> pairs = far_pairs(beside, false);
         std::sort(pairs.begin(), pairs.end());
@@ -551,21 +553,20 @@ private:
     /// (split face number, input face)
     using FarPair = std::pair<Index, Index>;
 
-    /// The pairs (judged_list_[k], g) for k in `judged`, g an input face whose box meets the
-    /// judged face's reach box and that shares no vertex with it; with `turned_only`, only
-    /// those where g turns against one of its pieces. One pass over the input's faces against a
-    /// grid of those reach boxes.
-    std::vector<FarPair> far_pairs(const std::vector<Index>& judged, bool turned_only) const {
+    /// The pairs (i, g) for split face i in `judged`, g an input face whose box meets i's reach
+    /// box and that shares no vertex with it; with `turned_only`, only those where g turns
+    /// against one of i's pieces. One pass over the input's faces against a grid of those reach
+    /// boxes.
+    std::vector<FarPair> far_pairs(std::span<const Index> judged, bool turned_only) const {
         if (judged.empty()) return {};
         std::vector<OuterBox> reach(judged.size());  // floats: half the memory
-        tbb::parallel_for(std::size_t{0}, judged.size(), [&](std::size_t j) {
-            reach[j] = OuterBox(reach_box_of(judged_list_[judged[j]]));
-        });
+        tbb::parallel_for(std::size_t{0}, judged.size(),
+                          [&](std::size_t j) { reach[j] = OuterBox(reach_box_of(judged[j])); });
         Box3 all;
         double size = 0.0;
         for (std::size_t j = 0; j < judged.size(); ++j) {
             all.extend(reach[j].box());
-            size += input_face_box(split_.face(judged_list_[judged[j]])).sizes().maxCoeff();
+            size += input_face_box(split_.face(judged[j])).sizes().maxCoeff();
         }
         // Cells of twice the judged faces' mean size, at most eight per judged face: a face's
         // box meets a few, each holding a few reach boxes, and no cell array spans the part's
@@ -583,7 +584,7 @@ private:
                                   const Box3 box = input_face_box(g);
                                   if (!box.intersects(all)) continue;
                                   grid.for_each_meeting(box, [&](Index j) {
-                                      const Index i = judged_list_[judged[j]];
+                                      const Index i = judged[j];
                                       if (!reach[j].may_meet(box) || touches_face(i, g)) return;
                                       if (!turned_only || turns_against_a_piece(i, g))
                                           mine.emplace_back(i, g);
